@@ -1,0 +1,43 @@
+#pragma once
+// Puts a pass together: the runtime's pass template (runtime/frame/shaders/<pass>.comp) with the
+// effect defines, the global knobs, the shared template code (common.glsl) and the scene's code.
+// A template's header says what it needs and when it runs:
+//   //! pass: post
+//   //! needs: distance | surface
+//   //! when: always | any-effect fog glow vignette foveation
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/diagnostics.h"
+#include "common/effects.h"
+#include "glsl_writer.h"
+#include "pack/manifest.h"
+#include "scene_codegen.h"
+
+namespace fg {
+
+struct PassTemplate {
+    std::string name;
+    std::string file;                  // e.g. "shade.comp"
+    std::string text;
+    bool needs_surface = false;
+    std::vector<Effect> when_any;      // empty: always
+    bool runs_with(const EffectSet& effects) const;
+};
+
+// All pass templates embedded in this build, parsed.
+const std::vector<PassTemplate>& pass_templates();
+const std::string& common_template();
+
+struct AssembledPass {
+    std::string name;
+    std::string glsl;
+    SourceMap source_map;
+};
+
+// `spec` gives the pack's defaults of the global knobs (step_scale = 1 / Lipschitz bound).
+AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, const SceneCodegen& scene,
+                            const std::vector<ManifestSpecConstant>& spec);
+
+}  // namespace fg

@@ -1,0 +1,185 @@
+#include "scene_codegen.h"
+
+#include <fmt/format.h>
+#include <functional>
+
+namespace fg {
+
+namespace {
+SourceOrigin generated() { return {}; }
+SourceOrigin from_node(const IrNode& n) {
+    SourceOrigin o;
+    o.kind = SourceOrigin::Kind::Node;
+    o.node_id = n.id;
+    o.pointer = n.pointer;
+    return o;
+}
+}  // namespace
+
+std::string SceneCodegen::variable(int node, int port) { return fmt::format("n{}_{}", node, port); }
+
+void SceneCodegen::output_defines(GlslWriter& w) const {
+    for (const auto& [name, _] : ir_.outputs) {
+        std::string upper = name;
+        for (auto& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        w.line(fmt::format("#define FG_OUT_{} 1", upper), generated());
+    }
+}
+
+void SceneCodegen::declarations(GlslWriter& w) const {
+    if (!ir_.params.empty()) {
+        w.line("// Graph parameters: uniforms, so editing a value never recompiles.", generated());
+        w.line("layout(set = 0, binding = 2, std140) uniform FgParams {", generated());
+        for (const auto& p : ir_.params) {
+            SourceOrigin o;
+            o.kind = SourceOrigin::Kind::Node;
+            o.pointer = p.pointer;
+            w.line(fmt::format("    {} {};", p.type == ValueType::Bool ? "int" : std::string(type_name(p.type)), p.name), o);
+        }
+        w.line("} fg_param;", generated());
+        w.blank();
+    }
+    bool any_knob = false;
+    for (const auto& n : ir_.nodes)
+        for (std::size_t i = 0; i < n.inputs.size(); ++i) {
+            const auto& in = n.inputs[i];
+            if (in.kind != IrInput::Kind::Knob) continue;
+            if (!any_knob) w.line("// Node knobs: specialization constants, swept by the benchmark without recompiling.", generated());
+            any_knob = true;
+            w.line(fmt::format("layout(constant_id = {}) const {} FG_KNOB_{} = {};  // {}.{}", in.knob_id,
+                               type_name(in.type), in.knob_id, in.constant.glsl(), n.def->inputs[i].knob, n.id),
+                   from_node(n));
+        }
+    if (any_knob) w.blank();
+    // Node bodies declare outputs as OUT(type) so the same text compiles as C++ (a reference there).
+    w.line("#define OUT(T) out T", generated());
+    w.line("#define INOUT(T) inout T", generated());
+    SourceOrigin prelude;
+    prelude.kind = SourceOrigin::Kind::Library;
+    prelude.file = "nodes/prelude.glsl";
+    prelude.line = 1;
+    w.write(library_.prelude(), prelude);
+    w.blank();
+    bodies(w, false);
+}
+
+void SceneCodegen::bodies(GlslWriter& w, bool shade_nodes) const {
+    std::set<std::pair<std::string, int>> done;  // (type, generic instance)
+    for (const auto& n : ir_.nodes) {
+        if ((n.def->context == NodeContext::Shade) != shade_nodes) continue;
+        int instance = n.generic ? static_cast<int>(*n.generic) : -1;
+        if (n.custom_def) {
+            SourceOrigin head = from_node(n);
+            std::string params;
+            for (std::size_t i = 0; i < n.def->inputs.size(); ++i)
+                params += fmt::format("{}{} {}", params.empty() ? "" : ", ", n.inputs[i].type == ValueType::Bool ? "bool" : std::string(type_name(n.inputs[i].type)), n.def->inputs[i].name);
+            for (std::size_t i = 0; i < n.def->outputs.size(); ++i)
+                params += fmt::format("{}out {} {}", params.empty() ? "" : ", ", type_name(n.output_types[i]), n.def->outputs[i].name);
+            w.line(fmt::format("void {}({})", n.def->function_name(), params), head);
+            w.line("{", head);
+            SourceOrigin code = head;
+            code.pointer = n.custom_code_pointer;
+            code.line = 1;
+            w.write(n.custom_code, code);
+            w.line("}", head);
+            w.blank();
+            continue;
+        }
+        if (!done.insert({n.def->type, instance}).second) continue;
+        SourceOrigin body;
+        body.kind = SourceOrigin::Kind::Library;
+        body.file = "nodes/" + n.def->glsl_path;
+        body.line = 1;
+        if (n.generic) w.line(fmt::format("#define T {}", type_name(*n.generic)), generated());
+        w.write(n.def->glsl, body);
+        if (n.generic) w.line("#undef T", generated());
+        w.blank();
+    }
+}
+
+std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
+    std::string v;
+    switch (in.kind) {
+        case IrInput::Kind::Node: v = variable(in.node, in.port); break;
+        case IrInput::Kind::Param: {
+            const auto& p = ir_.params[static_cast<std::size_t>(in.param)];
+            v = p.type == ValueType::Bool ? fmt::format("(fg_param.{} != 0)", p.name) : "fg_param." + p.name;
+            break;
+        }
+        case IrInput::Kind::Constant: v = in.constant.glsl(); break;
+        case IrInput::Kind::Knob: v = fmt::format("FG_KNOB_{}", in.knob_id); break;
+        case IrInput::Kind::Implicit:
+            switch (in.implicit) {
+                case ImplicitSource::Position: v = "p"; break;
+                case ImplicitSource::Time: v = "fg_frame.time.x"; break;
+                case ImplicitSource::Light: v = "fg_scene.light_dir.xyz"; break;
+                case ImplicitSource::ToCamera: v = shading ? "fg_to_camera" : "vec3(0.0)"; break;
+                case ImplicitSource::Normal: v = shading ? "fg_normal" : "vec3(0.0)"; break;
+                case ImplicitSource::None: v = "0.0"; break;
+            }
+            break;
+    }
+    if (in.source_type != in.type) v = fmt::format("{}({})", type_name(in.type), v);
+    return v;
+}
+
+void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const {
+    std::vector<bool> needed(ir_.nodes.size(), false);
+    std::function<void(const IrInput&)> need = [&](const IrInput& in) {
+        if (in.kind != IrInput::Kind::Node || needed[static_cast<std::size_t>(in.node)]) return;
+        needed[static_cast<std::size_t>(in.node)] = true;
+        for (const auto& sub : ir_.nodes[static_cast<std::size_t>(in.node)].inputs) need(sub);
+    };
+    for (const auto* r : roots) need(*r);
+    for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
+        if (!needed[i]) continue;
+        const auto& n = ir_.nodes[i];
+        SourceOrigin o = from_node(n);
+        std::string decl = "   ";
+        for (std::size_t k = 0; k < n.output_types.size(); ++k)
+            decl += fmt::format(" {} {};", type_name(n.output_types[k]), variable(static_cast<int>(i), static_cast<int>(k)));
+        w.line(decl + fmt::format("  // {} ({})", n.id, n.def->type), o);
+        std::string args;
+        for (const auto& in : n.inputs) args += (args.empty() ? "" : ", ") + value_of(in, shading);
+        for (std::size_t k = 0; k < n.output_types.size(); ++k)
+            args += (args.empty() ? "" : ", ") + variable(static_cast<int>(i), static_cast<int>(k));
+        w.line(fmt::format("    {}({});", n.def->function_name(), args), o);
+    }
+}
+
+void SceneCodegen::distance_function(GlslWriter& w) const {
+    const auto& d = ir_.outputs.at("distance");
+    w.line("float fg_scene_distance(vec3 p)", generated());
+    w.line("{", generated());
+    function_body(w, {&d}, false);
+    w.line(fmt::format("    return {};", value_of(d, false)), generated());
+    w.line("}", generated());
+    w.blank();
+}
+
+void SceneCodegen::surface_function(GlslWriter& w) const {
+    bodies(w, true);
+    w.line("struct FgSurface { vec3 albedo; float diffuse; float ao; float sss; float rim; vec3 emission; };", generated());
+    w.line("FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)", generated());
+    w.line("{", generated());
+    std::vector<const IrInput*> roots;
+    for (const auto& [name, in] : ir_.outputs)
+        if (name != "distance") roots.push_back(&in);
+    function_body(w, roots, true);
+    auto field = [&](const char* name, const char* fallback) {
+        auto it = ir_.outputs.find(name);
+        return it == ir_.outputs.end() ? std::string(fallback) : value_of(it->second, true);
+    };
+    w.line("    FgSurface s;", generated());
+    w.line(fmt::format("    s.albedo = {};", field("albedo", "fg_scene.albedo.xyz")), generated());
+    w.line(fmt::format("    s.diffuse = {};", field("diffuse", "0.0")), generated());
+    w.line(fmt::format("    s.ao = {};", field("ao", "1.0")), generated());
+    w.line(fmt::format("    s.sss = {};", field("sss", "0.0")), generated());
+    w.line(fmt::format("    s.rim = {};", field("rim", "0.0")), generated());
+    w.line(fmt::format("    s.emission = {};", field("emission", "vec3(0.0)")), generated());
+    w.line("    return s;", generated());
+    w.line("}", generated());
+    w.blank();
+}
+
+}  // namespace fg

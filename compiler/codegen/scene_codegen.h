@@ -1,0 +1,37 @@
+#pragma once
+// Emits the scene's part of every pass: the Params block, node knob constants, the node bodies the
+// graph uses (each once), custom-code functions, and the two entry points the pass templates call:
+//   float fg_scene_distance(vec3 p)                      only what the distance needs
+//   FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)   everything else
+#include <set>
+#include <string>
+
+#include "glsl_writer.h"
+#include "graph/node_library.h"
+#include "ir/ir_graph.h"
+
+namespace fg {
+
+class SceneCodegen {
+public:
+    SceneCodegen(const IrGraph& ir, const NodeLibrary& library) : ir_(ir), library_(library) {}
+
+    // #defines naming the outputs the graph binds (FG_OUT_ALBEDO ...), for the shade template.
+    void output_defines(GlslWriter& w) const;
+    // Params block, knob constants, prelude and the bodies of non-shade nodes.
+    void declarations(GlslWriter& w) const;
+    void distance_function(GlslWriter& w) const;
+    // Bodies of shade-context nodes (they call fg_scene_distance) and fg_scene_surface.
+    void surface_function(GlslWriter& w) const;
+
+private:
+    const IrGraph& ir_;
+    const NodeLibrary& library_;
+
+    void bodies(GlslWriter& w, bool shade_nodes) const;
+    void function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const;
+    std::string value_of(const IrInput& in, bool shading) const;
+    static std::string variable(int node, int port);
+};
+
+}  // namespace fg

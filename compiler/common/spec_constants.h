@@ -1,0 +1,60 @@
+#pragma once
+// The accuracy knobs every pack carries as specialization constants, in one place. Pass templates
+// never write constant ids: code generation declares these from this table, so the runtime, the
+// benchmark and the shaders agree. Node knobs (bias.<node>, iterations.<node>) take ids from
+// kFirstNodeKnobId on.
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "value_type.h"
+
+namespace fg {
+
+struct GlobalKnob {
+    std::uint32_t id;
+    std::string_view name;        // manifest name and `--knob name=value` on the command line
+    std::string_view glsl;        // the constant's name in GLSL
+    ValueType type;
+    double value;                 // default
+    double min, max;
+    std::string_view doc;
+};
+
+// Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
+inline constexpr std::array<GlobalKnob, 12> kGlobalKnobs{{
+    {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
+     "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
+    {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
+     "step cap of a full-resolution march (naive tracer, reprojection fix-up)"},
+    {3, "step_scale", "FG_STEP_SCALE", ValueType::Float, 1.0, 0.01, 4.0,
+     "multiplier on every step; the compiler sets 1 / Lipschitz bound"},
+    {4, "normal_taps", "FG_NORMAL_TAPS", ValueType::Int, 4, 4, 6,
+     "finite-difference normal: 4 (tetrahedral) or 6 (central) distance evaluations"},
+    {5, "count_evaluations", "FG_COUNT_EVALUATIONS", ValueType::Bool, 0, 0, 1,
+     "count distance evaluations per pixel into a buffer (off costs nothing)"},
+    {6, "cone_steps", "FG_CONE_STEPS", ValueType::Int, 64, 1, 1024,
+     "step cap of each coarse conemarch level"},
+    {7, "fine_steps", "FG_FINE_STEPS", ValueType::Int, 64, 1, 4096,
+     "step cap of the full-resolution conemarch level"},
+    {8, "cone_scale", "FG_CONE_SCALE", ValueType::Float, 1.0, 0.1, 4.0,
+     "multiplier on a coarse level's cone radius: above 1 stops earlier (safer), below 1 later"},
+    {9, "overrelax", "FG_OVERRELAX", ValueType::Float, 1.0, 1.0, 2.0,
+     "over-relaxation factor of the fine march (Keinert et al.), with fallback; 1 is off"},
+    {10, "miss_on_step_cap", "FG_MISS_ON_STEP_CAP", ValueType::Bool, 0, 0, 1,
+     "a ray that runs out of steps counts as a miss (1) or a hit where it stopped (0)"},
+    {11, "reproject_steps", "FG_REPROJECT_STEPS", ValueType::Int, 32, 1, 512,
+     "screen-space steps of the stereo reprojection search per level"},
+    {12, "reproject_fixup_steps", "FG_FIXUP_STEPS", ValueType::Int, 24, 0, 1024,
+     "sphere-tracing steps after reprojection (fix-up march)"},
+}};
+
+inline constexpr std::uint32_t kFirstNodeKnobId = 100;
+
+inline const GlobalKnob* find_global_knob(std::string_view name) {
+    for (const auto& k : kGlobalKnobs)
+        if (k.name == name) return &k;
+    return nullptr;
+}
+
+}  // namespace fg

@@ -1,0 +1,165 @@
+#include "compiler.h"
+
+#include <chrono>
+#include <fmt/format.h>
+#include <xxhash.h>
+
+#include "analysis/effect_set.h"
+#include "analysis/specialization.h"
+#include "codegen/scene_codegen.h"
+#include "graph/graph_loader.h"
+#include "ir/ir_builder.h"
+#include "pack/pack_chunk.h"
+#include "pack/pack_writer.h"
+#include "spirv/glsl_compiler.h"
+#include "spirv/reflection.h"
+#include "spirv/spirv_optimizer.h"
+
+namespace fg {
+
+namespace {
+
+class Stopwatch {
+public:
+    double lap() {
+        auto now = std::chrono::steady_clock::now();
+        double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+        return ms;
+    }
+
+private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+std::string content_hash(std::string_view text) { return fmt::format("{:016x}", XXH64(text.data(), text.size(), 0)); }
+
+std::vector<std::uint32_t> std140_offsets(const std::vector<ValueType>& members, std::uint32_t& size) {
+    std::vector<std::uint32_t> offsets;
+    std::uint32_t at = 0;
+    for (auto t : members) {
+        std::uint32_t n = static_cast<std::uint32_t>(component_count(t));
+        std::uint32_t align = n == 1 ? 4u : n == 2 ? 8u : 16u;
+        at = (at + align - 1) / align * align;
+        offsets.push_back(at);
+        at += 4 * n;
+    }
+    size = (at + 15) / 16 * 16;
+    return offsets;
+}
+
+std::optional<IrGraph> load_and_lower(std::string_view graph_text, const NodeLibrary& library, Diagnostics& diag,
+                                      FoldingStats* folding) {
+    auto graph = load_graph(graph_text, library, diag);
+    if (!graph) return std::nullopt;
+    auto ir = build_ir(*graph, library, diag);
+    if (!ir) return std::nullopt;
+    auto stats = fold_constants(*ir, diag);
+    if (folding) *folding = stats;
+    if (diag.has_errors()) return std::nullopt;
+    return ir;
+}
+
+std::optional<CompileResult> compile_graph(std::string_view graph_text, const NodeLibrary& library,
+                                           const CompileOptions& options, Diagnostics& diag) {
+    CompileResult result;
+    result.graph_text = std::string(graph_text);
+    result.include_glsl = options.include_glsl;
+    Stopwatch clock;
+    auto graph = load_graph(graph_text, library, diag);
+    result.times.load_ms = clock.lap();
+    if (!graph) return std::nullopt;
+    auto ir = build_ir(*graph, library, diag);
+    if (!ir) return std::nullopt;
+    result.folding = fold_constants(*ir, diag);
+    if (diag.has_errors()) return std::nullopt;
+    result.times.ir_ms = clock.lap();
+
+    // Analyses.
+    EffectSet effects = find_effects(*ir);
+    result.lipschitz = analyse_lipschitz(*ir, diag);
+    if (diag.has_errors()) return std::nullopt;
+    auto spec = assign_specialization(*ir, 1.0 / result.lipschitz.bound);
+    result.times.analysis_ms = clock.lap();
+
+    PackManifest& m = result.manifest;
+    m.name = graph->name.empty() ? "untitled" : graph->name;
+    m.compiler = fmt::format("fgc {}", kCompilerVersion);
+    m.graph_hash = content_hash(graph_text);
+    m.effects = effects;
+    m.spec_constants = spec.constants;
+    m.fractals = spec.fractals;
+    m.lipschitz_bound = result.lipschitz.bound;
+    m.lipschitz_exact = result.lipschitz.exact;
+    m.lipschitz_notes = result.lipschitz.notes;
+    m.scene = scene_settings_to_json(ir->scene);
+    {
+        std::vector<ValueType> types;
+        for (const auto& p : ir->params) types.push_back(p.type == ValueType::Bool ? ValueType::Int : p.type);
+        auto offsets = std140_offsets(types, m.params_size);
+        for (std::size_t i = 0; i < ir->params.size(); ++i) {
+            const auto& p = ir->params[i];
+            m.params.push_back({p.name, p.type, p.value, p.min, p.max, offsets[i], p.doc});
+        }
+        if (ir->params.empty()) m.params_size = 0;
+    }
+
+    // Code generation and the SPIR-V toolchain, pass by pass.
+    SceneCodegen scene(*ir, library);
+    for (const auto& tmpl : pass_templates()) {
+        if (!tmpl.runs_with(effects)) continue;
+        Stopwatch pass_clock;
+        CompiledPass pass;
+        pass.source = assemble_pass(tmpl, effects, scene, m.spec_constants);
+        result.times.codegen_ms += pass_clock.lap();
+        auto spirv = compile_glsl(tmpl.name, pass.source.glsl, pass.source.source_map, diag);
+        result.times.glslang_ms += pass_clock.lap();
+        if (!spirv) continue;
+        if (options.optimize) {
+            spirv = optimize_spirv(tmpl.name, *spirv, diag);
+            if (!spirv) continue;
+        }
+        if (!validate_spirv(tmpl.name, *spirv, diag)) continue;
+        result.times.optimize_ms += pass_clock.lap();
+        auto refl = reflect_spirv(tmpl.name, *spirv, diag);
+        result.times.reflect_ms += pass_clock.lap();
+        if (!refl) continue;
+        ManifestPass mp;
+        mp.name = tmpl.name;
+        mp.local_size = refl->local_size;
+        mp.bindings = refl->bindings;
+        mp.push_constant_size = refl->push_constant_size;
+        mp.spec_constants = refl->spec_constants;
+        if (auto it = refl->uniform_blocks.find("FgParams"); it != refl->uniform_blocks.end()) {
+            // Reflection and our own std140 layout must agree, or the runtime would write wrong bytes.
+            for (const auto& p : m.params) {
+                auto off = it->second.offsets.find(p.name);
+                if (off == it->second.offsets.end() || off->second != p.offset || it->second.size > m.params_size)
+                    diag.error(fmt::format("internal: reflected offset of parameter {} disagrees with std140", p.name));
+            }
+        }
+        m.passes.push_back(mp);
+        pass.spirv = std::move(*spirv);
+        result.passes.push_back(std::move(pass));
+    }
+    if (diag.has_errors()) return std::nullopt;
+    result.ir = std::move(*ir);
+    return result;
+}
+
+std::vector<std::uint8_t> pack_bytes(const CompileResult& result) {
+    PackWriter w;
+    w.add(std::make_unique<ManifestChunk>(manifest_to_json(result.manifest)));
+    w.add(std::make_unique<TextChunk>(kTagGraph, "", result.graph_text));
+    nlohmann::json maps = nlohmann::json::object();
+    for (const auto& p : result.passes) maps[p.source.name] = p.source.source_map.to_json();
+    w.add(std::make_unique<TextChunk>(kTagSourceMap, "", maps.dump()));
+    for (const auto& p : result.passes) w.add(std::make_unique<SpirvChunk>(p.source.name, p.spirv));
+    if (result.include_glsl)
+        for (const auto& p : result.passes) w.add(std::make_unique<TextChunk>(kTagGlsl, p.source.name, p.source.glsl));
+    return w.bytes();
+}
+
+}  // namespace fg

@@ -1,0 +1,30 @@
+#include "graph.h"
+
+namespace fg {
+
+const GraphNode* Graph::find_node(const std::string& id) const {
+    for (const auto& n : nodes)
+        if (n.id == id) return &n;
+    return nullptr;
+}
+
+const ParamDecl* Graph::find_param(const std::string& param) const {
+    for (const auto& p : params)
+        if (p.name == param) return &p;
+    return nullptr;
+}
+
+const std::vector<GraphOutputSpec>& graph_output_specs() {
+    static const std::vector<GraphOutputSpec> specs{
+        {"distance", ValueType::Float, true, "signed distance to the surface (required)"},
+        {"albedo", ValueType::Vec3, false, "surface colour before lighting"},
+        {"diffuse", ValueType::Float, false, "diffuse light factor; unbound: Lambert from finite-difference normals"},
+        {"ao", ValueType::Float, false, "ambient occlusion factor in [0, 1]"},
+        {"sss", ValueType::Float, false, "subsurface scattering factor"},
+        {"rim", ValueType::Float, false, "rim light factor"},
+        {"emission", ValueType::Vec3, false, "emitted colour, added after lighting"},
+    };
+    return specs;
+}
+
+}  // namespace fg

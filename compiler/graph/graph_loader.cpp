@@ -1,0 +1,481 @@
+#include "graph_loader.h"
+
+#include <fmt/format.h>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "identifiers.h"
+#include "json_text.h"
+#include "literal.h"
+#include "port_reader.h"
+#include "upgrade.h"
+
+namespace fg {
+
+namespace {
+
+using nlohmann::json;
+
+std::string join(const std::vector<std::string>& xs) {
+    std::string s;
+    for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? ", " : "") + xs[i];
+    return s;
+}
+
+class GraphReader {
+public:
+    GraphReader(const NodeLibrary& lib, Diagnostics& diag) : lib_(lib), diag_(diag) {}
+
+    std::optional<Graph> read(const json& doc) {
+        Graph g;
+        g.source = doc;
+        static const std::set<std::string> known{"format", "version", "name", "description", "params",
+                                                 "nodes", "outputs", "scene", "comment", "ui"};
+        for (auto it = doc.begin(); it != doc.end(); ++it)
+            if (!known.count(it.key())) diag_.error(fmt::format("unknown top-level field \"{}\"", it.key()), "/" + it.key());
+        if (doc.contains("name")) {
+            if (doc["name"].is_string()) g.name = doc["name"].get<std::string>();
+            else diag_.error("\"name\" must be a string", "/name");
+        }
+        if (doc.contains("description")) {
+            if (doc["description"].is_string()) g.description = doc["description"].get<std::string>();
+            else diag_.error("\"description\" must be a string", "/description");
+        }
+        read_params(doc, g);
+        read_nodes(doc, g);
+        read_outputs(doc, g);
+        g.scene = parse_scene_settings(doc.contains("scene") ? &doc["scene"] : nullptr, "/scene", diag_);
+        check_references(g);
+        check_cycles(g);
+        if (diag_.has_errors()) return std::nullopt;
+        return g;
+    }
+
+private:
+    const NodeLibrary& lib_;
+    Diagnostics& diag_;
+
+    void read_params(const json& doc, Graph& g) {
+        if (!doc.contains("params")) return;
+        const json& ps = doc["params"];
+        if (!ps.is_object()) {
+            diag_.error("\"params\" is an object of name -> {type, default, min, max}", "/params");
+            return;
+        }
+        for (auto it = ps.begin(); it != ps.end(); ++it) {
+            std::string ptr = "/params/" + it.key();
+            ParamDecl p;
+            p.name = it.key();
+            p.pointer = ptr;
+            if (!is_valid_identifier(p.name)) {
+                diag_.error(fmt::format("parameter name \"{}\" is not a valid identifier (lower case, digits, '_') "
+                                        "or is reserved",
+                                        p.name),
+                            ptr);
+                continue;
+            }
+            const json& pj = it.value();
+            if (!pj.is_object()) {
+                diag_.error("a parameter is an object {type, default, min, max, doc}", ptr);
+                continue;
+            }
+            static const std::set<std::string> known{"type", "default", "min", "max", "doc"};
+            for (auto k = pj.begin(); k != pj.end(); ++k)
+                if (!known.count(k.key())) diag_.error(fmt::format("unknown field \"{}\"", k.key()), ptr + "/" + k.key());
+            if (!pj.contains("type") || !pj["type"].is_string() || !parse_type(pj["type"].get<std::string>())) {
+                diag_.error("parameter needs \"type\": one of float, int, bool, vec2, vec3, vec4", ptr + "/type");
+                continue;
+            }
+            p.type = *parse_type(pj["type"].get<std::string>());
+            for (const char* bound : {"min", "max"}) {
+                if (!pj.contains(bound)) continue;
+                if (!pj[bound].is_number() || !std::isfinite(pj[bound].get<double>())) {
+                    diag_.error("expected a finite number", ptr + "/" + bound);
+                    continue;
+                }
+                (bound == std::string("min") ? p.min : p.max) = pj[bound].get<double>();
+            }
+            if (p.min && p.max && *p.min > *p.max) diag_.error("min is greater than max", ptr + "/min");
+            if (pj.contains("doc")) {
+                if (pj["doc"].is_string()) p.doc = pj["doc"].get<std::string>();
+                else diag_.error("\"doc\" must be a string", ptr + "/doc");
+            }
+            if (!pj.contains("default")) {
+                diag_.error("parameter needs a \"default\" value", ptr);
+                continue;
+            }
+            LiteralSite site{ptr + "/default", {}};
+            auto c = read_literal(pj["default"], site, diag_);
+            if (!c) continue;
+            auto cc = coerce_literal(*c, p.type, site, diag_);
+            if (!cc || !check_range(*cc, p.min, p.max, site, diag_)) continue;
+            p.value = *cc;
+            g.params.push_back(std::move(p));
+        }
+    }
+
+    std::optional<Binding> read_binding(const json& j, const std::string& ptr, const std::string& node_id) {
+        Binding b;
+        b.pointer = ptr;
+        auto from_reference = [&](const std::string& s) -> std::optional<Binding> {
+            if (s.empty()) {
+                diag_.error("empty reference: use \"node\", \"node.port\" or \"$param\"", ptr, node_id);
+                return std::nullopt;
+            }
+            if (s[0] == '$') {
+                b.kind = Binding::Kind::Param;
+                b.param = s.substr(1);
+                return b;
+            }
+            b.kind = Binding::Kind::Node;
+            auto dot = s.find('.');
+            b.node = s.substr(0, dot);
+            if (dot != std::string::npos) b.port = s.substr(dot + 1);
+            return b;
+        };
+        if (j.is_string()) return from_reference(j.get<std::string>());
+        if (j.is_object()) {
+            if (j.contains("node") && j["node"].is_string()) {
+                auto r = from_reference(j["node"].get<std::string>());
+                if (r && j.contains("port")) {
+                    if (j["port"].is_string()) r->port = j["port"].get<std::string>();
+                    else diag_.error("\"port\" must be a string", ptr + "/port", node_id);
+                }
+                return r;
+            }
+            if (j.contains("param") && j["param"].is_string()) {
+                b.kind = Binding::Kind::Param;
+                b.param = j["param"].get<std::string>();
+                return b;
+            }
+            if (j.contains("value")) {
+                auto c = read_literal(j["value"], {ptr + "/value", node_id}, diag_);
+                if (!c) return std::nullopt;
+                b.literal = *c;
+                return b;
+            }
+            diag_.error("a binding object has \"node\" (and \"port\"), \"param\" or \"value\"", ptr, node_id);
+            return std::nullopt;
+        }
+        auto c = read_literal(j, {ptr, node_id}, diag_);
+        if (!c) return std::nullopt;
+        b.literal = *c;
+        return b;
+    }
+
+    std::optional<CustomCode> read_custom(const json& nj, const std::string& ptr, const std::string& id) {
+        CustomCode c;
+        auto report = [&](const std::string& m, const std::string& at) { diag_.error(m, at, id); };
+        if (!nj.contains("ports") || !nj["ports"].is_object()) {
+            diag_.error("a custom.glsl node declares \"ports\": {\"inputs\": [...], \"outputs\": [...]}", ptr, id);
+            return std::nullopt;
+        }
+        const auto& ports = nj["ports"];
+        std::set<std::string> names;
+        for (const char* side : {"inputs", "outputs"}) {
+            bool is_input = side == std::string("inputs");
+            if (!ports.contains(side)) continue;
+            if (!ports[side].is_array()) {
+                report(fmt::format("\"{}\" is an array of ports", side), ptr + "/ports/" + side);
+                continue;
+            }
+            for (std::size_t i = 0; i < ports[side].size(); ++i) {
+                std::string pp = fmt::format("{}/ports/{}/{}", ptr, side, i);
+                auto p = read_port_definition(ports[side][i], pp, is_input, false, false, report);
+                if (!p) continue;
+                if (!names.insert(p->name).second) report(fmt::format("port \"{}\" declared twice", p->name), pp);
+                if (!p->knob.empty()) report("custom nodes have no knobs", pp + "/knob");
+                (is_input ? c.inputs : c.outputs).push_back(*p);
+            }
+        }
+        if (c.outputs.empty()) report("a custom.glsl node declares at least one output", ptr + "/ports/outputs");
+        c.code_pointer = ptr + "/code";
+        if (!nj.contains("code")) {
+            report("a custom.glsl node needs \"code\": the GLSL statements of its body", ptr);
+        } else if (nj["code"].is_string()) {
+            c.code = nj["code"].get<std::string>();
+        } else if (nj["code"].is_array()) {
+            for (std::size_t i = 0; i < nj["code"].size(); ++i) {
+                if (!nj["code"][i].is_string()) report("code lines are strings", fmt::format("{}/code/{}", ptr, i));
+                else c.code += nj["code"][i].get<std::string>() + "\n";
+            }
+        } else {
+            report("\"code\" is a string or an array of lines", ptr + "/code");
+        }
+        // Guard against code that would break out of the generated function.
+        int depth = 0;
+        for (char ch : c.code) {
+            depth += ch == '{' ? 1 : ch == '}' ? -1 : 0;
+            if (depth < 0) break;
+        }
+        if (depth != 0) report("unbalanced braces in code", ptr + "/code");
+        if (!nj.contains("lipschitz")) {
+            report("a custom.glsl node must declare its Lipschitz bound: \"lipschitz\": 1.0 (a factor) or a rule such "
+                   "as \"L(p) * 2\"",
+                   ptr);
+        } else if (nj["lipschitz"].is_number()) {
+            double k = nj["lipschitz"].get<double>();
+            if (!std::isfinite(k) || k <= 0) report("the Lipschitz factor must be a positive number", ptr + "/lipschitz");
+            // A factor k means: every output changes at most k times as fast as the fastest input.
+            std::string rule = "0";
+            for (const auto& in : c.inputs) rule = fmt::format("max({}, L({}))", rule, in.name);
+            c.lipschitz = fmt::format("{} * {}", k, rule);
+        } else if (nj["lipschitz"].is_string()) {
+            c.lipschitz = nj["lipschitz"].get<std::string>();
+        } else {
+            report("\"lipschitz\" is a number (factor) or a rule string", ptr + "/lipschitz");
+        }
+        return c;
+    }
+
+    void read_nodes(const json& doc, Graph& g) {
+        if (!doc.contains("nodes")) {
+            diag_.error("missing \"nodes\": the graph has no nodes", "");
+            return;
+        }
+        const json& ns = doc["nodes"];
+        if (!ns.is_array()) {
+            diag_.error("\"nodes\" is an array", "/nodes");
+            return;
+        }
+        std::set<std::string> ids;
+        for (std::size_t i = 0; i < ns.size(); ++i) {
+            std::string ptr = fmt::format("/nodes/{}", i);
+            const json& nj = ns[i];
+            if (!nj.is_object()) {
+                diag_.error("a node is an object with \"id\" and \"type\"", ptr);
+                continue;
+            }
+            GraphNode n;
+            n.pointer = ptr;
+            if (!nj.contains("id") || !nj["id"].is_string()) {
+                diag_.error("node needs a string \"id\"", ptr);
+                continue;
+            }
+            n.id = nj["id"].get<std::string>();
+            if (!is_valid_node_id(n.id)) {
+                diag_.error(fmt::format("node id \"{}\" may use only letters, digits, '_' and '-'", n.id), ptr + "/id", n.id);
+                continue;
+            }
+            if (!ids.insert(n.id).second) {
+                diag_.error(fmt::format("duplicate node id \"{}\"", n.id), ptr + "/id", n.id);
+                continue;
+            }
+            if (!nj.contains("type") || !nj["type"].is_string()) {
+                diag_.error("node needs a string \"type\"", ptr, n.id);
+                continue;
+            }
+            n.type = nj["type"].get<std::string>();
+            const bool custom = n.type == kCustomNodeType;
+            static const std::set<std::string> known{"id", "type", "inputs", "comment", "ui"};
+            static const std::set<std::string> known_custom{"ports", "code", "lipschitz"};
+            for (auto it = nj.begin(); it != nj.end(); ++it)
+                if (!known.count(it.key()) && !(custom && known_custom.count(it.key())))
+                    diag_.error(fmt::format("unknown node field \"{}\"", it.key()), ptr + "/" + it.key(), n.id);
+            const NodeDefinition* def = nullptr;
+            if (custom) {
+                n.custom = read_custom(nj, ptr, n.id);
+            } else {
+                def = lib_.find(n.type);
+                if (!def) {
+                    auto near = lib_.similar(n.type);
+                    diag_.error(fmt::format("unknown node type \"{}\"{}", n.type,
+                                            near.empty() ? " (fgc nodes lists them)" : "; did you mean " + join(near) + "?"),
+                                ptr + "/type", n.id);
+                }
+            }
+            if (nj.contains("inputs")) {
+                const json& ins = nj["inputs"];
+                if (!ins.is_object()) {
+                    diag_.error("\"inputs\" is an object of port -> binding", ptr + "/inputs", n.id);
+                } else {
+                    for (auto it = ins.begin(); it != ins.end(); ++it) {
+                        std::string ip = ptr + "/inputs/" + it.key();
+                        const PortDefinition* port = nullptr;
+                        if (def) port = def->find_input(it.key());
+                        if (n.custom)
+                            for (const auto& p : n.custom->inputs)
+                                if (p.name == it.key()) port = &p;
+                        if ((def || n.custom) && !port) {
+                            std::vector<std::string> names;
+                            for (const auto& p : def ? def->inputs : n.custom->inputs) names.push_back(p.name);
+                            diag_.error(fmt::format("{} has no input \"{}\"; its inputs are: {}", n.type, it.key(),
+                                                    names.empty() ? "(none)" : join(names)),
+                                        ip, n.id);
+                            continue;
+                        }
+                        auto b = read_binding(it.value(), ip, n.id);
+                        if (!b) continue;
+                        if (b->kind == Binding::Kind::Literal && port) {
+                            LiteralSite site{ip, n.id};
+                            if (port->type.concrete) {
+                                auto c = coerce_literal(b->literal, *port->type.concrete, site, diag_);
+                                if (!c || !check_range(*c, port->min, port->max, site, diag_)) continue;
+                                b->literal = *c;
+                            } else if (!check_range(b->literal, port->min, port->max, site, diag_)) {
+                                continue;
+                            }
+                        }
+                        n.inputs[it.key()] = *b;
+                    }
+                }
+            }
+            if (def || n.custom) {
+                for (const auto& p : def ? def->inputs : n.custom->inputs)
+                    if (p.required() && !n.inputs.count(p.name))
+                        diag_.error(fmt::format("missing required input \"{}\" ({}) of {}", p.name, p.type.text(), n.type),
+                                    ptr + "/inputs", n.id);
+            }
+            g.nodes.push_back(std::move(n));
+        }
+    }
+
+    void read_outputs(const json& doc, Graph& g) {
+        if (!doc.contains("outputs") || !doc["outputs"].is_object()) {
+            diag_.error("missing \"outputs\": the graph must bind at least \"distance\"", "/outputs");
+            return;
+        }
+        const json& os = doc["outputs"];
+        for (auto it = os.begin(); it != os.end(); ++it) {
+            std::string ptr = "/outputs/" + it.key();
+            const GraphOutputSpec* spec = nullptr;
+            for (const auto& s : graph_output_specs())
+                if (it.key() == s.name) spec = &s;
+            if (!spec) {
+                std::vector<std::string> names;
+                for (const auto& s : graph_output_specs()) names.push_back(s.name);
+                diag_.error(fmt::format("unknown output \"{}\"; outputs are: {}", it.key(), join(names)), ptr);
+                continue;
+            }
+            auto b = read_binding(it.value(), ptr, {});
+            if (!b) continue;
+            if (b->kind == Binding::Kind::Literal) {
+                auto c = coerce_literal(b->literal, spec->type, {ptr, {}}, diag_);
+                if (!c) continue;
+                b->literal = *c;
+            }
+            g.outputs[it.key()] = *b;
+        }
+        for (const auto& s : graph_output_specs())
+            if (s.required && !os.contains(s.name))
+                diag_.error(fmt::format("missing required output \"{}\" ({})", s.name, s.doc), "/outputs");
+    }
+
+    // Every reference names an existing node and output port, or an existing param.
+    void check_binding(const Graph& g, const Binding& b, const std::string& node_id) {
+        if (b.kind == Binding::Kind::Param) {
+            if (!g.find_param(b.param)) {
+                std::vector<std::string> names;
+                for (const auto& p : g.params) names.push_back(p.name);
+                diag_.error(fmt::format("unknown parameter \"${}\"{}", b.param,
+                                        names.empty() ? " (the graph declares no params)" : "; params are: " + join(names)),
+                            b.pointer, node_id);
+            }
+            return;
+        }
+        if (b.kind != Binding::Kind::Node) return;
+        const GraphNode* src = g.find_node(b.node);
+        if (!src) {
+            diag_.error(fmt::format("unknown node \"{}\" (write \"$name\" for a parameter)", b.node), b.pointer, node_id);
+            return;
+        }
+        if (b.port.empty()) return;
+        std::vector<std::string> names;
+        if (const NodeDefinition* def = lib_.find(src->type))
+            for (const auto& p : def->outputs) names.push_back(p.name);
+        else if (src->custom)
+            for (const auto& p : src->custom->outputs) names.push_back(p.name);
+        else
+            return;  // unknown type: already reported
+        if (std::find(names.begin(), names.end(), b.port) == names.end())
+            diag_.error(fmt::format("node \"{}\" ({}) has no output \"{}\"; its outputs are: {}", b.node, src->type,
+                                    b.port, join(names)),
+                        b.pointer, node_id);
+    }
+
+    void check_references(const Graph& g) {
+        for (const auto& n : g.nodes)
+            for (const auto& [_, b] : n.inputs) check_binding(g, b, n.id);
+        for (const auto& [_, b] : g.outputs) check_binding(g, b, {});
+    }
+
+    void check_cycles(const Graph& g) {
+        std::map<std::string, int> state;  // 0 unvisited, 1 on stack, 2 done
+        std::vector<std::string> stack;
+        std::set<std::string> reported;
+        std::function<void(const GraphNode&)> visit = [&](const GraphNode& n) {
+            state[n.id] = 1;
+            stack.push_back(n.id);
+            for (const auto& [port, b] : n.inputs) {
+                if (b.kind != Binding::Kind::Node) continue;
+                const GraphNode* src = g.find_node(b.node);
+                if (!src) continue;
+                if (state[src->id] == 1) {
+                    auto start = std::find(stack.begin(), stack.end(), src->id);
+                    std::string path;
+                    for (auto it = start; it != stack.end(); ++it) path += *it + " -> ";
+                    path += src->id;
+                    if (reported.insert(src->id).second)
+                        diag_.error(fmt::format("cycle: {} (a graph must not feed a node's output back into itself)",
+                                                path),
+                                    b.pointer, n.id);
+                } else if (state[src->id] == 0) {
+                    visit(*src);
+                }
+            }
+            stack.pop_back();
+            state[n.id] = 2;
+        };
+        for (const auto& n : g.nodes)
+            if (state[n.id] == 0) visit(n);
+    }
+};
+
+}  // namespace
+
+std::optional<Graph> load_graph(std::string_view json_text, const NodeLibrary& library, Diagnostics& diag) {
+    auto doc = parse_json_text(json_text, diag);
+    if (!doc) return std::nullopt;
+    if (!doc->is_object()) {
+        diag.error(fmt::format("a graph is a JSON object, not {}", doc->type_name()), "");
+        return std::nullopt;
+    }
+    if (!doc->contains("format") || (*doc)["format"] != kGraphFormat) {
+        diag.error(fmt::format("not a Fractograph graph: expected \"format\": \"{}\"", kGraphFormat), "/format");
+        return std::nullopt;
+    }
+    if (!doc->contains("version") || !(*doc)["version"].is_number_integer()) {
+        diag.error("missing integer \"version\"", "/version");
+        return std::nullopt;
+    }
+    auto version = (*doc)["version"].get<long long>();
+    if (version > kGraphVersion) {
+        diag.error(fmt::format("graph format version {} is newer than this fgc understands (up to {}); update "
+                               "Fractograph",
+                               version, kGraphVersion),
+                   "/version");
+        return std::nullopt;
+    }
+    if (version < 1) {
+        diag.error(fmt::format("graph format version {} does not exist (versions start at 1)", version), "/version");
+        return std::nullopt;
+    }
+    if (!upgrade_graph(*doc, static_cast<int>(version), diag)) return std::nullopt;
+    GraphReader reader(library, diag);
+    return reader.read(*doc);
+}
+
+std::optional<Graph> load_graph_file(const std::string& path, const NodeLibrary& library, Diagnostics& diag) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        diag.error(fmt::format("cannot open {}", path));
+        return std::nullopt;
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return load_graph(ss.str(), library, diag);
+}
+
+}  // namespace fg

@@ -1,0 +1,73 @@
+#pragma once
+// One node type of the library, read from nodes/<namespace>/<name>.json. Its implementation is the
+// GLSL function in the .glsl file beside it; the same text compiles as C++ for the CPU twin.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/effects.h"
+#include "common/value_type.h"
+
+namespace fg {
+
+// A port's type: a concrete type, or the node's generic type T (one of NodeDefinition::generic).
+struct PortType {
+    std::optional<ValueType> concrete;   // empty: generic T
+    bool is_generic() const { return !concrete; }
+    std::string text() const { return concrete ? std::string(type_name(*concrete)) : "T"; }
+};
+
+// What an unbound input takes: values the runtime supplies. Position and time exist everywhere;
+// the others only while shading a hit (a node using them is shade-only).
+enum class ImplicitSource { None, Position, Time, Light, ToCamera, Normal };
+
+std::string_view implicit_source_name(ImplicitSource s);          // "position", "light", ...
+std::optional<ImplicitSource> parse_implicit_source(std::string_view s);
+ValueType implicit_source_type(ImplicitSource s);
+bool implicit_source_is_shade_only(ImplicitSource s);
+
+struct PortDefinition {
+    std::string name;
+    PortType type;
+    std::string doc;
+    std::optional<Constant> default_value;    // literal default (inputs)
+    ImplicitSource implicit = ImplicitSource::None;  // "default": "position", "time", "light", ...
+    std::optional<double> min, max;           // valid range of literals, checked per component
+    std::string knob;                         // "iterations" / "bias": becomes a specialization constant
+    std::optional<Effect> effect;             // outputs: using this output adds the effect
+    bool required() const { return !default_value && implicit == ImplicitSource::None; }
+};
+
+enum class NodeContext {
+    Any,    // pure function of its inputs: may feed the distance
+    Shade,  // evaluated only at a hit (may call the scene distance, read the normal)
+};
+
+struct NodeDefinition {
+    std::string type;          // "fractal.mandelbulb"
+    std::string summary;       // one line
+    std::string doc;           // why and when to use it
+    NodeContext context = NodeContext::Any;
+    std::vector<PortDefinition> inputs;
+    std::vector<PortDefinition> outputs;
+    std::vector<ValueType> generic;                 // types T may take; empty if not generic
+    std::map<std::string, std::string> lipschitz;   // output name -> rule (see analysis/lipschitz_rule.h)
+    std::string running_derivative;                 // the dr update the bias guards; non-empty for DE fractals
+    std::vector<Effect> effects;                    // using the node adds these
+    nlohmann::json example;                         // an example node ("inputs": {...}) for the docs
+    std::string glsl;                               // the body: one function, function_name()
+    std::string json_path;                          // where it came from, for messages
+    std::string glsl_path;
+    bool builtin_input = false;                     // input.* nodes: code generation supplies them
+    std::string function;                           // set for custom-code nodes: their generated name
+
+    std::string function_name() const;              // "fg_fractal_mandelbulb"
+    const PortDefinition* find_input(const std::string& name) const;
+    const PortDefinition* find_output(const std::string& name) const;
+    std::string namespace_name() const;             // "fractal"
+};
+
+}  // namespace fg

@@ -1,0 +1,261 @@
+#include "node_library.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "identifiers.h"
+#include "json_text.h"
+#include "port_reader.h"
+
+namespace fg {
+
+std::span<const EmbeddedFile> embedded_node_files();  // generated from nodes/ (nodes/CMakeLists.txt)
+
+namespace {
+
+using nlohmann::json;
+
+struct DefReader {
+    const std::string& path;
+    Diagnostics& diag;
+    void error(const std::string& msg, const std::string& ptr) { diag.error(fmt::format("{}: {}", path, msg), ptr); }
+
+    std::string string_field(const json& j, const char* key, const std::string& ptr, bool required) {
+        if (!j.contains(key)) {
+            if (required) error(fmt::format("missing \"{}\"", key), ptr);
+            return {};
+        }
+        if (!j[key].is_string()) {
+            error(fmt::format("\"{}\" must be a string", key), ptr + "/" + key);
+            return {};
+        }
+        return j[key].get<std::string>();
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_path, std::string_view json_text,
+                                                      Diagnostics& diag) {
+    Diagnostics parse_diag;
+    auto parsed = parse_json_text(json_text, parse_diag);
+    for (auto d : parse_diag.items()) {
+        d.message = json_path + ": " + d.message;
+        diag.add(d);
+    }
+    if (!parsed) return nullptr;
+    const json& j = *parsed;
+    std::size_t errors_before = diag.error_count();
+    DefReader r{json_path, diag};
+    if (!j.is_object()) {
+        r.error("a node definition is a JSON object", "");
+        return nullptr;
+    }
+    static const std::set<std::string> known{"type", "summary", "doc", "context", "inputs", "outputs", "generic",
+                                             "lipschitz", "running_derivative", "effects", "example"};
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (!known.count(it.key())) r.error(fmt::format("unknown field \"{}\"", it.key()), "/" + it.key());
+
+    auto def = std::make_unique<NodeDefinition>();
+    def->json_path = json_path;
+    def->type = r.string_field(j, "type", "", true);
+    auto dot = def->type.find('.');
+    if (!def->type.empty() && (dot == std::string::npos || dot == 0 || dot + 1 == def->type.size() ||
+                               !is_valid_node_id(def->type.substr(0, dot)) ||
+                               def->type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_.") != std::string::npos))
+        r.error(fmt::format("type \"{}\" must be namespace.name in lower case", def->type), "/type");
+    def->summary = r.string_field(j, "summary", "", true);
+    def->doc = r.string_field(j, "doc", "", true);
+    auto ctx = r.string_field(j, "context", "", false);
+    if (ctx == "shade") def->context = NodeContext::Shade;
+    else if (!ctx.empty() && ctx != "any") r.error("context is \"any\" or \"shade\"", "/context");
+    def->builtin_input = def->namespace_name() == "input";
+
+    if (j.contains("generic")) {
+        if (!j["generic"].is_array()) r.error("\"generic\" is an array of type names", "/generic");
+        else
+            for (std::size_t i = 0; i < j["generic"].size(); ++i) {
+                const auto& g = j["generic"][i];
+                auto t = g.is_string() ? parse_type(g.get<std::string>()) : std::nullopt;
+                if (!t) r.error("unknown type", fmt::format("/generic/{}", i));
+                else def->generic.push_back(*t);
+            }
+    }
+    for (const char* side : {"inputs", "outputs"}) {
+        bool is_input = side == std::string("inputs");
+        if (!j.contains(side)) {
+            if (!is_input) r.error("missing \"outputs\"", "");
+            continue;
+        }
+        if (!j[side].is_array()) {
+            r.error(fmt::format("\"{}\" is an array of ports", side), std::string("/") + side);
+            continue;
+        }
+        std::set<std::string> names;
+        for (std::size_t i = 0; i < j[side].size(); ++i) {
+            std::string ptr = fmt::format("/{}/{}", side, i);
+            auto p = read_port_definition(j[side][i], ptr, is_input, !def->generic.empty(), true,
+                                          [&r](const std::string& m, const std::string& at) { r.error(m, at); });
+            if (!p) continue;
+            if (!names.insert(p->name).second) r.error(fmt::format("port \"{}\" declared twice", p->name), ptr + "/name");
+            (is_input ? def->inputs : def->outputs).push_back(*p);
+        }
+    }
+    if (def->outputs.empty() && j.contains("outputs")) r.error("a node has at least one output", "/outputs");
+
+    if (j.contains("lipschitz")) {
+        const auto& l = j["lipschitz"];
+        if (l.is_string()) {
+            for (const auto& out : def->outputs) def->lipschitz[out.name] = l.get<std::string>();
+        } else if (l.is_object()) {
+            for (auto it = l.begin(); it != l.end(); ++it) {
+                if (!def->find_output(it.key())) r.error(fmt::format("no output \"{}\"", it.key()), "/lipschitz/" + it.key());
+                else if (!it.value().is_string()) r.error("a Lipschitz rule is a string", "/lipschitz/" + it.key());
+                else def->lipschitz[it.key()] = it.value().get<std::string>();
+            }
+        } else {
+            r.error("\"lipschitz\" is a rule string or an object of output -> rule", "/lipschitz");
+        }
+    }
+    def->running_derivative = r.string_field(j, "running_derivative", "", false);
+    if (!def->running_derivative.empty()) {
+        bool has_bias = std::any_of(def->inputs.begin(), def->inputs.end(), [](auto& p) { return p.knob == "bias"; });
+        if (!has_bias) r.error("a node with a running derivative needs an input with \"knob\": \"bias\"", "/inputs");
+    }
+    if (j.contains("effects")) {
+        if (!j["effects"].is_array()) r.error("\"effects\" is an array of effect names", "/effects");
+        else
+            for (std::size_t i = 0; i < j["effects"].size(); ++i) {
+                const auto& e = j["effects"][i];
+                auto eff = e.is_string() ? parse_effect(e.get<std::string>()) : std::nullopt;
+                if (!eff) r.error("unknown effect", fmt::format("/effects/{}", i));
+                else def->effects.push_back(*eff);
+            }
+    }
+    if (j.contains("example")) def->example = j["example"];
+    if (diag.error_count() != errors_before) return nullptr;
+    return def;
+}
+
+NodeLibrary NodeLibrary::from_files(std::span<const EmbeddedFile> files, Diagnostics& diag) {
+    NodeLibrary lib;
+    std::map<std::string, std::string_view> bodies;
+    for (const auto& f : files) {
+        std::string path(f.path);
+        if (path.ends_with("prelude.glsl")) lib.prelude_ += std::string(f.text);
+        else if (path.ends_with(".glsl")) bodies[path.substr(0, path.size() - 5)] = f.text;
+    }
+    for (const auto& f : files) {
+        std::string path(f.path);
+        if (!path.ends_with(".json")) continue;
+        std::string stem = path.substr(0, path.size() - 5);
+        auto body = bodies.find(stem);
+        lib.add_definition(path, f.text, stem + ".glsl", body == bodies.end() ? std::string() : std::string(body->second),
+                           diag);
+    }
+    return lib;
+}
+
+void NodeLibrary::add_definition(const std::string& json_path, std::string_view json_text, std::string glsl_path,
+                                 std::string glsl_text, Diagnostics& diag) {
+    auto def = parse_node_definition(json_path, json_text, diag);
+    if (!def) return;
+    if (!def->builtin_input) {
+        if (glsl_text.empty()) {
+            diag.error(fmt::format("{}: no GLSL body {} beside the definition", json_path, glsl_path));
+            return;
+        }
+        if (glsl_text.find(def->function_name()) == std::string::npos) {
+            diag.error(fmt::format("{}: the body does not define {}()", glsl_path, def->function_name()));
+            return;
+        }
+    }
+    def->glsl = std::move(glsl_text);
+    def->glsl_path = std::move(glsl_path);
+    if (defs_.count(def->type)) {
+        diag.error(fmt::format("{}: node type {} is already defined by {}", json_path, def->type,
+                               defs_[def->type]->json_path));
+        return;
+    }
+    std::string type = def->type;
+    defs_[type] = std::move(def);
+}
+
+void NodeLibrary::load_folder(const std::string& folder, Diagnostics& diag) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) {
+        diag.error(fmt::format("node folder {} does not exist", folder));
+        return;
+    }
+    auto read = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    for (const auto& entry : fs::recursive_directory_iterator(folder, ec)) {
+        if (entry.path().extension() != ".json") continue;
+        auto glsl = entry.path();
+        glsl.replace_extension(".glsl");
+        add_definition(entry.path().string(), read(entry.path()), glsl.string(),
+                       fs::exists(glsl) ? read(glsl) : std::string(), diag);
+    }
+}
+
+const NodeLibrary& NodeLibrary::builtin() {
+    static const NodeLibrary lib = [] {
+        Diagnostics diag;
+        auto l = from_files(embedded_node_files(), diag);
+        if (diag.has_errors()) {
+            fmt::print(stderr, "fractograph: the built-in node library is broken:\n{}", diag.format());
+            std::abort();
+        }
+        return l;
+    }();
+    return lib;
+}
+
+const NodeDefinition* NodeLibrary::find(const std::string& type) const {
+    auto it = defs_.find(type);
+    return it == defs_.end() ? nullptr : it->second.get();
+}
+
+std::vector<const NodeDefinition*> NodeLibrary::all() const {
+    std::vector<const NodeDefinition*> out;
+    for (const auto& [_, d] : defs_) out.push_back(d.get());
+    return out;
+}
+
+namespace {
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+}  // namespace
+
+std::vector<std::string> NodeLibrary::similar(const std::string& type) const {
+    std::vector<std::pair<std::size_t, std::string>> scored;
+    auto name_of = [](const std::string& t) { return t.substr(t.find('.') + 1); };
+    for (const auto& [t, _] : defs_) {
+        std::size_t d = std::min(edit_distance(type, t), edit_distance(name_of(type), name_of(t)));
+        if (d <= 3) scored.emplace_back(d, t);
+    }
+    std::sort(scored.begin(), scored.end());
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < scored.size() && i < 3; ++i) out.push_back(scored[i].second);
+    return out;
+}
+
+}  // namespace fg

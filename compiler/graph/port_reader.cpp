@@ -1,0 +1,100 @@
+#include "port_reader.h"
+
+#include <fmt/format.h>
+#include <set>
+
+#include "identifiers.h"
+#include "literal.h"
+
+namespace fg {
+
+std::optional<PortDefinition> read_port_definition(const nlohmann::json& j, const std::string& ptr, bool is_input,
+                                                   bool generic_allowed, bool doc_required, const ReportError& error) {
+    if (!j.is_object()) {
+        error("a port is an object with \"name\" and \"type\"", ptr);
+        return std::nullopt;
+    }
+    static const std::set<std::string> known{"name", "type", "doc", "default", "min", "max", "knob", "effect"};
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (!known.count(it.key())) error(fmt::format("unknown field \"{}\"", it.key()), ptr + "/" + it.key());
+    auto text = [&](const char* key, bool required) -> std::string {
+        if (!j.contains(key)) {
+            if (required) error(fmt::format("missing \"{}\"", key), ptr);
+            return {};
+        }
+        if (!j[key].is_string()) {
+            error(fmt::format("\"{}\" must be a string", key), ptr + "/" + key);
+            return {};
+        }
+        return j[key].get<std::string>();
+    };
+    PortDefinition p;
+    p.name = text("name", true);
+    if (!p.name.empty() && !is_valid_identifier(p.name))
+        error(fmt::format("port name \"{}\" is not a valid identifier (lower case, digits, '_') or is reserved", p.name),
+              ptr + "/name");
+    std::string type = text("type", true);
+    if (type == "T") {
+        if (!generic_allowed) error("generic type T needs the node to list its \"generic\" types", ptr + "/type");
+    } else if (auto t = parse_type(type)) {
+        p.type.concrete = *t;
+    } else if (!type.empty()) {
+        error(fmt::format("unknown type \"{}\" (float, int, bool, vec2, vec3, vec4)", type), ptr + "/type");
+    }
+    p.doc = text("doc", doc_required);
+    for (const char* bound : {"min", "max"}) {
+        if (!j.contains(bound)) continue;
+        if (!j[bound].is_number()) {
+            error(fmt::format("\"{}\" must be a number", bound), ptr + "/" + bound);
+            continue;
+        }
+        (bound == std::string("min") ? p.min : p.max) = j[bound].get<double>();
+    }
+    if (p.min && p.max && *p.min > *p.max) error("min is greater than max", ptr + "/min");
+    if (j.contains("default")) {
+        if (!is_input) {
+            error("outputs have no default", ptr + "/default");
+        } else if (j["default"].is_string()) {
+            auto s = j["default"].get<std::string>();
+            if (auto src = parse_implicit_source(s)) {
+                p.implicit = *src;
+                if (p.type.concrete != implicit_source_type(*src))
+                    error(fmt::format("default \"{}\" is a {}, the port is {}", s, type_name(implicit_source_type(*src)),
+                                      p.type.text()),
+                          ptr + "/default");
+            } else {
+                error(fmt::format("default \"{}\": a string default is position, time, light, to_camera or normal", s),
+                      ptr + "/default");
+            }
+        } else {
+            Diagnostics local;
+            LiteralSite site{ptr + "/default", {}};
+            if (auto c = read_literal(j["default"], site, local)) {
+                if (p.type.concrete) {
+                    if (auto cc = coerce_literal(*c, *p.type.concrete, site, local)) {
+                        if (check_range(*cc, p.min, p.max, site, local)) p.default_value = *cc;
+                    }
+                } else {
+                    p.default_value = *c;  // generic: broadcast when the type is known
+                }
+            }
+            for (const auto& d : local.items()) error(d.message, d.pointer);
+        }
+    }
+    if (j.contains("knob")) {
+        p.knob = text("knob", false);
+        if (!is_input) error("only inputs can be knobs", ptr + "/knob");
+        if (p.knob != "iterations" && p.knob != "bias")
+            error(fmt::format("knob \"{}\": knobs are \"iterations\" or \"bias\"", p.knob), ptr + "/knob");
+        else if (p.knob == "iterations" && p.type.concrete != ValueType::Int) error("an iterations knob is an int", ptr);
+        else if (p.knob == "bias" && p.type.concrete != ValueType::Float) error("a bias knob is a float", ptr);
+    }
+    if (j.contains("effect")) {
+        auto e = text("effect", false);
+        if (auto eff = parse_effect(e)) p.effect = *eff;
+        else error(fmt::format("unknown effect \"{}\"", e), ptr + "/effect");
+    }
+    return p;
+}
+
+}  // namespace fg

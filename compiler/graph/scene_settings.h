@@ -1,0 +1,69 @@
+#pragma once
+// Scene settings of a graph ("scene": {...}): camera start, light, background and the post
+// effects. Present blocks turn effects on (fog, glow, vignette, foveation); their values become
+// uniforms, so editing them never recompiles.
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "common/diagnostics.h"
+
+namespace fg {
+
+struct SceneSettings {
+    struct Camera {
+        glm::dvec3 position{0.0, 0.0, 3.0};
+        glm::dvec3 target{0.0, 0.0, 0.0};
+        glm::dvec3 up{0.0, 1.0, 0.0};
+        double fov_deg = 90.0;
+    } camera;
+    struct Light {
+        glm::dvec3 direction{0.577, 0.577, 0.577};   // towards the light
+        glm::dvec3 color{1.0, 0.95, 0.9};
+        glm::dvec3 ambient{0.12, 0.14, 0.18};
+        glm::dvec3 sss_color{1.0, 0.4, 0.25};
+        glm::dvec3 rim_color{0.6, 0.8, 1.0};
+    } light;
+    glm::dvec3 albedo{0.8, 0.8, 0.8};                 // when the graph binds no albedo
+    struct Background {
+        glm::dvec3 top{0.02, 0.02, 0.03};
+        glm::dvec3 bottom{0.02, 0.02, 0.03};
+    } background;
+    struct Fog {
+        glm::dvec3 color{0.05, 0.05, 0.08};
+        double density = 0.1;                         // extinction per unit distance
+    };
+    std::optional<Fog> fog;
+    struct Glow {
+        glm::dvec3 color{0.4, 0.7, 1.0};
+        double intensity = 1.0;
+        double falloff = 0.05;                        // distance at which glow drops to 1/e
+    };
+    std::optional<Glow> glow;
+    struct Vignette {
+        double strength = 0.4;
+    };
+    std::optional<Vignette> vignette;
+    struct Foveation {
+        double inner_radius = 0.35;                   // of the half-diagonal, full resolution inside
+        double blend = 0.15;
+    };
+    std::optional<Foveation> foveation;
+    glm::dvec3 bounds_center{0.0, 0.0, 0.0};
+    double bounds_radius = 4.0;                       // rays leave the scene outside this sphere
+    double max_distance = 100.0;                      // far limit of the march, in scene units
+    double exposure = 1.0;
+    double world_scale = 1.0;                         // initial viewer scale (locomotion)
+    nlohmann::json locomotion = nlohmann::json::object();  // limits for the locomotion system
+
+    bool has_background_gradient() const { return background.top != background.bottom; }
+};
+
+// Parse "scene" (may be absent); unknown keys, wrong types and out-of-range values are reported
+// under `pointer` (normally "/scene").
+SceneSettings parse_scene_settings(const nlohmann::json* j, const std::string& pointer, Diagnostics& diag);
+nlohmann::json scene_settings_to_json(const SceneSettings& s);
+
+}  // namespace fg

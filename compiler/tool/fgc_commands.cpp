@@ -1,0 +1,286 @@
+#include "fgc_commands.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "compiler.h"
+#include "cpu/cpu_evaluator.h"
+#include "graph/node_library.h"
+#include "pack/pack_reader.h"
+#include "pack/pack_writer.h"
+
+namespace fg {
+std::span<const EmbeddedFile> embedded_node_files();
+}
+
+namespace fg::fgc {
+
+namespace {
+
+std::optional<std::string> read_text(const std::string& path, Diagnostics& diag) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        diag.error(fmt::format("cannot open {}", path));
+        return std::nullopt;
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+NodeLibrary library_for(const Common& c, Diagnostics& diag) {
+    NodeLibrary lib = NodeLibrary::from_files(embedded_node_files(), diag);
+    for (const auto& folder : c.node_folders) lib.load_folder(folder, diag);
+    return lib;
+}
+
+int report(const Diagnostics& diag, const std::string& file) {
+    std::string text = diag.format(file);
+    if (!text.empty()) fmt::print(stderr, "{}", text);
+    if (diag.has_errors()) {
+        fmt::print(stderr, "{}: {} error{}\n", file, diag.error_count(), diag.error_count() == 1 ? "" : "s");
+        return 1;
+    }
+    return 0;
+}
+
+std::string join(const std::vector<std::string>& xs, const char* sep = ", ") {
+    std::string s;
+    for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? sep : "") + xs[i];
+    return s.empty() ? "(none)" : s;
+}
+
+void print_summary(const PackManifest& m, std::size_t bytes) {
+    fmt::print("pack '{}' ({}, {} bytes)\n", m.name, m.compiler, bytes);
+    fmt::print("  effects:    {}\n", join(m.effects.names()));
+    std::vector<std::string> passes;
+    for (const auto& p : m.passes) passes.push_back(p.name);
+    fmt::print("  passes:     {}\n", join(passes));
+    fmt::print("  lipschitz:  {:.4g}{} (step scale {:.4g})\n", m.lipschitz_bound, m.lipschitz_exact ? "" : " (fallback)",
+               1.0 / m.lipschitz_bound);
+    for (const auto& f : m.fractals) {
+        const auto* bias = m.find_spec(f.bias_spec);
+        const auto* iters = m.find_spec(f.iterations_spec);
+        fmt::print("  fractal:    {} ({}): bias {}, iterations {}\n", f.node, f.type,
+                   bias ? fmt::format("{:g}", bias->value) : "param", iters ? fmt::format("{:g}", iters->value) : "param");
+    }
+    for (const auto& p : m.params)
+        fmt::print("  param:      {} {} = {} [{}, {}]\n", type_name(p.type), p.name, p.value.text(),
+                   p.min ? fmt::format("{:g}", *p.min) : "-", p.max ? fmt::format("{:g}", *p.max) : "-");
+}
+
+}  // namespace
+
+int check(const Common& c, const std::string& graph) {
+    Diagnostics diag;
+    auto lib = library_for(c, diag);
+    auto text = read_text(graph, diag);
+    if (!text) return report(diag, graph);
+    auto result = compile_graph(*text, lib, {}, diag);
+    int rc = report(diag, graph);
+    if (rc == 0 && result && !c.quiet) {
+        fmt::print("{}: ok: {} nodes after folding {} and removing {}; effects: {}; Lipschitz bound {:.4g}\n", graph,
+                   result->ir.nodes.size(), result->folding.folded, result->folding.removed,
+                   join(result->manifest.effects.names()), result->manifest.lipschitz_bound);
+    }
+    return rc;
+}
+
+int compile(const Common& c, const std::string& graph, const std::string& output_arg, const std::string& glsl_dir,
+            bool include_glsl, bool verbose) {
+    Diagnostics diag;
+    auto lib = library_for(c, diag);
+    auto text = read_text(graph, diag);
+    if (!text) return report(diag, graph);
+    CompileOptions options;
+    options.include_glsl = include_glsl;
+    auto result = compile_graph(*text, lib, options, diag);
+    if (report(diag, graph) != 0 || !result) return 1;
+    std::string output = output_arg;
+    if (output.empty()) output = std::filesystem::path(graph).replace_extension(".fgpack").string();
+    if (!glsl_dir.empty()) {
+        std::filesystem::create_directories(glsl_dir);
+        for (const auto& p : result->passes) {
+            std::ofstream(std::filesystem::path(glsl_dir) / (p.source.name + ".comp")) << p.source.glsl;
+        }
+    }
+    auto bytes = pack_bytes(*result);
+    std::filesystem::path parent = std::filesystem::path(output).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    Diagnostics write_diag;
+    if (!write_file_atomically(output, bytes, write_diag)) return report(write_diag, graph);
+    if (!c.quiet) {
+        fmt::print("wrote {}\n", output);
+        print_summary(result->manifest, bytes.size());
+    }
+    if (verbose) {
+        const auto& t = result->times;
+        fmt::print("  time:       {:.1f} ms (load {:.1f}, ir {:.1f}, analysis {:.1f}, codegen {:.1f}, glslang {:.1f}, "
+                   "spirv-opt+val {:.1f}, reflect {:.1f})\n",
+                   t.total_ms(), t.load_ms, t.ir_ms, t.analysis_ms, t.codegen_ms, t.glslang_ms, t.optimize_ms,
+                   t.reflect_ms);
+        for (const auto& n : result->lipschitz.notes) fmt::print("  note:       {}\n", n);
+    }
+    return 0;
+}
+
+int info(const Common&, const std::string& path, bool json) {
+    Diagnostics diag;
+    auto pack = read_pack_file(path, diag);
+    if (!pack) return report(diag, path);
+    if (json) {
+        fmt::print("{}\n", pack->manifest_json.dump(2));
+        return 0;
+    }
+    print_summary(pack->manifest, pack->file_size);
+    fmt::print("  format:     {}.{}, {} chunks\n", pack->version_major, pack->version_minor, pack->chunks.size());
+    for (const auto& ch : pack->chunks)
+        fmt::print("    {} {:<10} {:>8} bytes at {:>7}  xxh64 {:016x}\n", tag_text(ch.tag), ch.name, ch.payload_size,
+                   ch.offset, ch.checksum);
+    const auto& m = pack->manifest;
+    fmt::print("  knobs (specialization constants):\n");
+    for (const auto& s : m.spec_constants)
+        fmt::print("    {:>3} {:<24} {:<5} {:g}\n", s.id, s.name, type_name(s.type), s.value);
+    fmt::print("  passes:\n");
+    for (const auto& p : m.passes) {
+        std::vector<std::string> b;
+        for (const auto& x : p.bindings) b.push_back(fmt::format("{}:{} {} {}", x.set, x.binding, x.kind, x.name));
+        fmt::print("    {:<10} local {}x{}x{}, push {} B, {} SPIR-V words\n      bindings: {}\n", p.name, p.local_size[0],
+                   p.local_size[1], p.local_size[2], p.push_constant_size, pack->spirv.at(p.name).size(), join(b));
+    }
+    return 0;
+}
+
+namespace {
+
+std::string port_line(const PortDefinition& p, bool input) {
+    std::string s = fmt::format("{} {}", p.type.text(), p.name);
+    if (input) {
+        if (p.implicit != ImplicitSource::None) s += fmt::format(" = <{}>", implicit_source_name(p.implicit));
+        else if (p.default_value) s += " = " + p.default_value->text();
+        else s += " (required)";
+        if (p.min || p.max)
+            s += fmt::format(" in [{}, {}]", p.min ? fmt::format("{:g}", *p.min) : "-inf",
+                             p.max ? fmt::format("{:g}", *p.max) : "inf");
+        if (!p.knob.empty()) s += fmt::format(" (knob: {})", p.knob);
+    } else if (p.effect) {
+        s += fmt::format(" (adds effect {})", effect_name(*p.effect));
+    }
+    return s + " - " + p.doc;
+}
+
+std::string markdown_node(const NodeDefinition& d) {
+    std::string s = fmt::format("### `{}`\n\n{}\n\n{}\n\n", d.type, d.summary, d.doc);
+    if (d.context == NodeContext::Shade) s += "*Shading only*: evaluated at the hit, never inside the march.\n\n";
+    if (!d.generic.empty()) {
+        std::vector<std::string> g;
+        for (auto t : d.generic) g.emplace_back(type_name(t));
+        s += fmt::format("Generic: `T` is one of {}.\n\n", join(g));
+    }
+    s += "| port | type | default | range | about |\n|---|---|---|---|---|\n";
+    for (const auto& p : d.inputs) {
+        std::string def = p.implicit != ImplicitSource::None ? fmt::format("*{}*", implicit_source_name(p.implicit))
+                          : p.default_value                  ? p.default_value->text()
+                                                             : "required";
+        std::string range = (p.min || p.max) ? fmt::format("[{}, {}]", p.min ? fmt::format("{:g}", *p.min) : "-inf",
+                                                           p.max ? fmt::format("{:g}", *p.max) : "inf")
+                                             : "";
+        std::string about = p.doc + (p.knob.empty() ? "" : fmt::format(" (knob: {})", p.knob));
+        s += fmt::format("| in `{}` | {} | {} | {} | {} |\n", p.name, p.type.text(), def, range, about);
+    }
+    for (const auto& p : d.outputs) {
+        std::string about = p.doc + (p.effect ? fmt::format(" (adds effect `{}`)", effect_name(*p.effect)) : "");
+        s += fmt::format("| out `{}` | {} | | | {} |\n", p.name, p.type.text(), about);
+    }
+    s += "\n";
+    if (!d.lipschitz.empty()) {
+        s += "Lipschitz rule: ";
+        std::vector<std::string> rules;
+        for (const auto& [out, rule] : d.lipschitz) rules.push_back(fmt::format("`{}`: `{}`", out, rule));
+        s += join(rules, "; ") + "\n\n";
+    }
+    if (!d.running_derivative.empty())
+        s += fmt::format("Running derivative (guarded by the conservative bias): `{}`\n\n", d.running_derivative);
+    if (!d.effects.empty()) {
+        std::vector<std::string> e;
+        for (auto x : d.effects) e.emplace_back(effect_name(x));
+        s += fmt::format("Adds effects: {}\n\n", join(e));
+    }
+    if (!d.example.is_null())
+        s += fmt::format("Example:\n\n```json\n{{\"id\": \"{}\", \"type\": \"{}\", \"inputs\": {}}}\n```\n\n",
+                         d.namespace_name() == "input" ? d.type.substr(6) : d.type.substr(d.type.find('.') + 1), d.type,
+                         d.example.value("inputs", nlohmann::json::object()).dump());
+    return s;
+}
+
+}  // namespace
+
+int nodes(const Common& c, const std::string& type, bool markdown) {
+    Diagnostics diag;
+    auto lib = library_for(c, diag);
+    if (diag.has_errors()) return report(diag, "node library");
+    if (!type.empty()) {
+        const auto* d = lib.find(type);
+        if (!d) {
+            auto near = lib.similar(type);
+            fmt::print(stderr, "unknown node type \"{}\"{}\n", type, near.empty() ? "" : "; did you mean " + join(near) + "?");
+            return 1;
+        }
+        if (markdown) {
+            fmt::print("{}", markdown_node(*d));
+            return 0;
+        }
+        fmt::print("{}\n  {}\n\n  {}\n", d->type, d->summary, d->doc);
+        fmt::print("  inputs:\n");
+        for (const auto& p : d->inputs) fmt::print("    {}\n", port_line(p, true));
+        fmt::print("  outputs:\n");
+        for (const auto& p : d->outputs) fmt::print("    {}\n", port_line(p, false));
+        for (const auto& [out, rule] : d->lipschitz) fmt::print("  lipschitz {}: {}\n", out, rule);
+        if (!d->running_derivative.empty()) fmt::print("  running derivative: {}\n", d->running_derivative);
+        return 0;
+    }
+    if (markdown) {
+        fmt::print("# Node reference\n\nGenerated by `fgc nodes --markdown` from `nodes/`; do not edit by hand.\n\n");
+        fmt::print("Every input can be bound to another node's output (`\"node.port\"`), a parameter "
+                   "(`\"$name\"`) or a literal. Ports marked *position*, *light*, ... take that runtime value "
+                   "when left unbound.\n\n");
+        std::string ns;
+        for (const auto* d : lib.all()) {
+            if (d->namespace_name() != ns) {
+                ns = d->namespace_name();
+                fmt::print("## {}\n\n", ns);
+            }
+            fmt::print("{}", markdown_node(*d));
+        }
+        return 0;
+    }
+    std::string ns;
+    for (const auto* d : lib.all()) {
+        if (d->namespace_name() != ns) {
+            ns = d->namespace_name();
+            fmt::print("{}\n", ns);
+        }
+        fmt::print("  {:<24} {}\n", d->type, d->summary);
+    }
+    return 0;
+}
+
+int probe(const Common& c, const std::string& graph, double x, double y, double z) {
+    Diagnostics diag;
+    auto lib = library_for(c, diag);
+    auto text = read_text(graph, diag);
+    if (!text) return report(diag, graph);
+    auto ir = load_and_lower(*text, lib, diag);
+    if (!ir) return report(diag, graph);
+    auto ev = CpuEvaluator::create(*ir, diag);
+    if (!ev) return report(diag, graph);
+    glm::dvec3 p(x, y, z);
+    double d = ev->distance(p);
+    glm::dvec3 n = ev->normal(p);
+    fmt::print("distance {:.17g}\nnormal   {:.9f} {:.9f} {:.9f}\n", d, n.x, n.y, n.z);
+    return 0;
+}
+
+}  // namespace fg::fgc

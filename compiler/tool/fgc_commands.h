@@ -1,0 +1,20 @@
+#pragma once
+// The fgc subcommands, each a function returning the process exit code.
+#include <string>
+#include <vector>
+
+namespace fg::fgc {
+
+struct Common {
+    std::vector<std::string> node_folders;   // extra node libraries (--nodes DIR)
+    bool quiet = false;
+};
+
+int check(const Common& c, const std::string& graph);
+int compile(const Common& c, const std::string& graph, const std::string& output, const std::string& glsl_dir,
+            bool include_glsl, bool verbose);
+int info(const Common& c, const std::string& pack, bool json);
+int nodes(const Common& c, const std::string& type, bool markdown);
+int probe(const Common& c, const std::string& graph, double x, double y, double z);
+
+}  // namespace fg::fgc

@@ -1,0 +1,49 @@
+// fgc: the Fractograph graph compiler. Graph JSON in, shader pack out.
+#include <CLI/CLI.hpp>
+
+#include "compiler.h"
+#include "fgc_commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"fgc: compiles Fractograph node graphs (JSON) into shader packs (.fgpack)"};
+    app.set_version_flag("--version", std::string("fgc ") + fg::kCompilerVersion);
+    app.require_subcommand(1);
+    fg::fgc::Common common;
+    app.add_option("--nodes", common.node_folders, "extra node library folder (repeatable)")->check(CLI::ExistingDirectory);
+
+    std::string graph, output, glsl_dir, pack, type;
+    bool include_glsl = false, verbose = false, json = false, markdown = false;
+    double x = 0, y = 0, z = 0;
+
+    auto* check = app.add_subcommand("check", "validate a graph: every problem, with its node and JSON pointer");
+    check->add_option("graph", graph, "graph JSON")->required();
+
+    auto* compile = app.add_subcommand("compile", "compile a graph into a shader pack");
+    compile->add_option("graph", graph, "graph JSON")->required();
+    compile->add_option("-o,--output", output, "pack to write (default: the graph's name with .fgpack)");
+    compile->add_option("--emit-glsl", glsl_dir, "also write each pass's generated GLSL into this folder");
+    compile->add_flag("--include-glsl", include_glsl, "store the generated GLSL inside the pack (debugging)");
+    compile->add_flag("-v,--verbose", verbose, "print stage timings and analysis results");
+
+    auto* info = app.add_subcommand("info", "summarise a pack: effects, passes, knobs, parameters");
+    info->add_option("pack", pack, "pack file")->required();
+    info->add_flag("--json", json, "print the manifest as JSON");
+
+    auto* nodes = app.add_subcommand("nodes", "list the node library, or document one node type");
+    nodes->add_option("type", type, "node type, e.g. fractal.mandelbulb");
+    nodes->add_flag("--markdown", markdown, "write the node reference as Markdown (docs/nodes.md)");
+
+    auto* probe = app.add_subcommand("probe", "distance at a point, by the CPU twin in double precision");
+    probe->add_option("graph", graph, "graph JSON")->required();
+    probe->add_option("x", x)->required();
+    probe->add_option("y", y)->required();
+    probe->add_option("z", z)->required();
+
+    CLI11_PARSE(app, argc, argv);
+    if (*check) return fg::fgc::check(common, graph);
+    if (*compile) return fg::fgc::compile(common, graph, output, glsl_dir, include_glsl, verbose);
+    if (*info) return fg::fgc::info(common, pack, json);
+    if (*nodes) return fg::fgc::nodes(common, type, markdown);
+    if (*probe) return fg::fgc::probe(common, graph, x, y, z);
+    return 2;
+}

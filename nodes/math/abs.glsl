@@ -1,0 +1,4 @@
+void fg_math_abs(T x, OUT(T) value)
+{
+    value = abs(x);
+}

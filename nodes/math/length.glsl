@@ -1,0 +1,4 @@
+void fg_math_length(T v, OUT(float) value)
+{
+    value = length(v);
+}

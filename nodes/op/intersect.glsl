@@ -1,0 +1,4 @@
+void fg_op_intersect(float a, float b, OUT(float) distance)
+{
+    distance = max(a, b);
+}

@@ -1,0 +1,4 @@
+void fg_op_subtract(float a, float b, OUT(float) distance)
+{
+    distance = max(a, -b);
+}

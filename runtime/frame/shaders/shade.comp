@@ -1,0 +1,80 @@
+//! pass: shade
+//! needs: surface
+//! when: always
+// Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a
+// finite-difference normal only if something needs it, and the background for misses.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
+#ifdef FG_HAS_POST
+layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fg_color;   // HDR, for post
+#else
+layout(set = 0, binding = 4, rgba8) uniform writeonly image2D fg_color;     // final, tonemapped
+#endif
+layout(push_constant) uniform FgShadePush { int view; } pc;
+
+vec3 fg_background(vec3 rd)
+{
+#ifdef FG_HAS_BACKGROUND_GRADIENT
+    return mix(fg_scene.bg_bottom.rgb, fg_scene.bg_top.rgb, clamp(0.5 + 0.5 * rd.y, 0.0, 1.0));
+#else
+    return fg_scene.bg_top.rgb;
+#endif
+}
+
+vec3 fg_normal_at(vec3 p, float h)
+{
+    if (FG_NORMAL_TAPS >= 6) {
+        vec2 e = vec2(h, 0.0);
+        return normalize(vec3(fg_scene_distance(p + e.xyy) - fg_scene_distance(p - e.xyy),
+                              fg_scene_distance(p + e.yxy) - fg_scene_distance(p - e.yxy),
+                              fg_scene_distance(p + e.yyx) - fg_scene_distance(p - e.yyx)) + vec3(1e-20));
+    }
+    // Tetrahedral taps: four evaluations instead of six.
+    vec2 k = vec2(1.0, -1.0);
+    return normalize(k.xyy * fg_scene_distance(p + k.xyy * h) + k.yyx * fg_scene_distance(p + k.yyx * h) +
+                     k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h) +
+                     vec3(1e-20));
+}
+
+vec3 fg_tonemap(vec3 c)
+{
+    // ACES fit (Narkowicz): keeps bright glow from clipping to white abruptly.
+    c *= fg_scene.misc.x;
+    return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+}
+
+void main()
+{
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(fg_frame.size.xy);
+    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+    vec3 ro = fg_ray_origin(pc.view);
+    vec3 rd = fg_ray_dir(pc.view, uv);
+    float t = imageLoad(fg_depth, pixel).x;
+    vec3 color;
+    if (t < 0.0) {
+        color = fg_background(rd);
+    } else {
+        vec3 p = ro + rd * t;
+        vec3 n = vec3(0.0, 1.0, 0.0);
+#ifdef FG_HAS_NORMALS
+        // The tap distance follows the pixel's footprint, so normals are as sharp as the image.
+        n = fg_normal_at(p, max(fg_cone_tan(0) * t, 1e-6));
+#endif
+        FgSurface s = fg_scene_surface(p, -rd, n);
+#ifdef FG_OUT_DIFFUSE
+        float diffuse = s.diffuse;
+#else
+        float diffuse = max(dot(n, fg_scene.light_dir.xyz), 0.0);
+#endif
+        color = s.albedo * (fg_scene.ambient.rgb * s.ao + fg_scene.light_color.rgb * diffuse) +
+                s.sss * fg_scene.sss_color.rgb * s.albedo + s.rim * fg_scene.rim_color.rgb + s.emission;
+    }
+#ifdef FG_HAS_POST
+    imageStore(fg_color, pixel, vec4(color, 1.0));
+#else
+    imageStore(fg_color, pixel, vec4(fg_tonemap(color), 1.0));
+#endif
+}

@@ -1,0 +1,5 @@
+#include <gtest/gtest.h>
+
+#include "compiler.h"
+
+TEST(Placeholder, builds) { SUCCEED(); }
