@@ -60,14 +60,35 @@ void SceneCodegen::declarations(GlslWriter& w) const {
     prelude.line = 1;
     w.write(library_.prelude(), prelude);
     w.blank();
-    bodies(w, false);
+    bodies(w, needed_by({&ir_.outputs.at("distance")}), std::vector<bool>(ir_.nodes.size(), false));
 }
 
-void SceneCodegen::bodies(GlslWriter& w, bool shade_nodes) const {
-    std::set<std::pair<std::string, int>> done;  // (type, generic instance)
-    for (const auto& n : ir_.nodes) {
-        if ((n.def->context == NodeContext::Shade) != shade_nodes) continue;
-        int instance = n.generic ? static_cast<int>(*n.generic) : -1;
+std::vector<bool> SceneCodegen::needed_by(const std::vector<const IrInput*>& roots) const {
+    std::vector<bool> needed(ir_.nodes.size(), false);
+    std::function<void(const IrInput&)> need = [&](const IrInput& in) {
+        if (in.kind != IrInput::Kind::Node || needed[static_cast<std::size_t>(in.node)]) return;
+        needed[static_cast<std::size_t>(in.node)] = true;
+        for (const auto& sub : ir_.nodes[static_cast<std::size_t>(in.node)].inputs) need(sub);
+    };
+    for (const auto* r : roots) need(*r);
+    return needed;
+}
+
+std::vector<const IrInput*> SceneCodegen::surface_roots() const {
+    std::vector<const IrInput*> roots;
+    for (const auto& [name, in] : ir_.outputs)
+        if (name != "distance") roots.push_back(&in);
+    return roots;
+}
+
+void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const std::vector<bool>& skip) const {
+    auto key = [](const IrNode& n) { return std::make_pair(n.def->function_name(), n.generic ? static_cast<int>(*n.generic) : -1); };
+    std::set<std::pair<std::string, int>> done;  // (function, generic instance)
+    for (std::size_t i = 0; i < ir_.nodes.size(); ++i)
+        if (skip[i]) done.insert(key(ir_.nodes[i]));
+    for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
+        if (!want[i]) continue;
+        const IrNode& n = ir_.nodes[i];
         if (n.custom_def) {
             SourceOrigin head = from_node(n);
             std::string params;
@@ -83,9 +104,10 @@ void SceneCodegen::bodies(GlslWriter& w, bool shade_nodes) const {
             w.write(n.custom_code, code);
             w.line("}", head);
             w.blank();
+            done.insert(key(n));
             continue;
         }
-        if (!done.insert({n.def->type, instance}).second) continue;
+        if (!done.insert(key(n)).second) continue;
         SourceOrigin body;
         body.kind = SourceOrigin::Kind::Library;
         body.file = "nodes/" + n.def->glsl_path;
@@ -124,13 +146,7 @@ std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
 }
 
 void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const {
-    std::vector<bool> needed(ir_.nodes.size(), false);
-    std::function<void(const IrInput&)> need = [&](const IrInput& in) {
-        if (in.kind != IrInput::Kind::Node || needed[static_cast<std::size_t>(in.node)]) return;
-        needed[static_cast<std::size_t>(in.node)] = true;
-        for (const auto& sub : ir_.nodes[static_cast<std::size_t>(in.node)].inputs) need(sub);
-    };
-    for (const auto* r : roots) need(*r);
+    std::vector<bool> needed = needed_by(roots);
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
         if (!needed[i]) continue;
         const auto& n = ir_.nodes[i];
@@ -158,14 +174,11 @@ void SceneCodegen::distance_function(GlslWriter& w) const {
 }
 
 void SceneCodegen::surface_function(GlslWriter& w) const {
-    bodies(w, true);
+    bodies(w, needed_by(surface_roots()), needed_by({&ir_.outputs.at("distance")}));
     w.line("struct FgSurface { vec3 albedo; float diffuse; float ao; float sss; float rim; vec3 emission; };", generated());
     w.line("FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)", generated());
     w.line("{", generated());
-    std::vector<const IrInput*> roots;
-    for (const auto& [name, in] : ir_.outputs)
-        if (name != "distance") roots.push_back(&in);
-    function_body(w, roots, true);
+    function_body(w, surface_roots(), true);
     auto field = [&](const char* name, const char* fallback) {
         auto it = ir_.outputs.find(name);
         return it == ir_.outputs.end() ? std::string(fallback) : value_of(it->second, true);

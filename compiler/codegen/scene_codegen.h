@@ -18,17 +18,22 @@ public:
 
     // #defines naming the outputs the graph binds (FG_OUT_ALBEDO ...), for the shade template.
     void output_defines(GlslWriter& w) const;
-    // Params block, knob constants, prelude and the bodies of non-shade nodes.
+    // Params block, knob constants, prelude and the bodies the distance needs.
     void declarations(GlslWriter& w) const;
     void distance_function(GlslWriter& w) const;
-    // Bodies of shade-context nodes (they call fg_scene_distance) and fg_scene_surface.
+    // The other bodies the surface outputs need (shade nodes call fg_scene_distance), and
+    // fg_scene_surface.
     void surface_function(GlslWriter& w) const;
 
 private:
     const IrGraph& ir_;
     const NodeLibrary& library_;
 
-    void bodies(GlslWriter& w, bool shade_nodes) const;
+    // Nodes the distance (or the surface outputs) need, by IR index.
+    std::vector<bool> needed_by(const std::vector<const IrInput*>& roots) const;
+    std::vector<const IrInput*> surface_roots() const;
+    // Bodies of the nodes in `want` whose type is not in `skip` (each type and instance once).
+    void bodies(GlslWriter& w, const std::vector<bool>& want, const std::vector<bool>& skip) const;
     void function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const;
     std::string value_of(const IrInput& in, bool shading) const;
     static std::string variable(int node, int port);

@@ -100,6 +100,14 @@ std::optional<nlohmann::json> parse_json_text(std::string_view text, Diagnostics
         bool truncated = e.byte >= text.size();
         diag.error(fmt::format("{}not valid JSON at {}: {}", truncated ? "the file ends early; " : "",
                                describe_offset(text, e.byte == 0 ? 0 : e.byte - 1), reason));
+    } catch (const json::out_of_range& e) {
+        // A number too large for a double (1e999): report where it is; it would be infinite.
+        std::string what = e.what();
+        auto quote = what.find('\'');
+        std::string token = quote == std::string::npos ? "" : what.substr(quote + 1, what.rfind('\'') - quote - 1);
+        auto at = token.empty() ? std::string_view::npos : text.find(token);
+        diag.error(fmt::format("number {} at {} is out of range: literals must be finite", token,
+                               at == std::string_view::npos ? "?" : describe_offset(text, at)));
     } catch (const json::exception& e) {
         std::string what = e.what();
         auto bracket = what.find("] ");

@@ -262,6 +262,18 @@ private:
         ir_.nodes.push_back(std::move(n));
     }
 
+    // The node that makes `node` shade-only: a shade-context node, or one reading a shade input.
+    const IrNode& shade_root(int node) const {
+        const IrNode& n = ir_.nodes[static_cast<std::size_t>(node)];
+        if (n.def->context == NodeContext::Shade) return n;
+        for (const auto& in : n.inputs) {
+            if (in.kind == IrInput::Kind::Implicit && implicit_source_is_shade_only(in.implicit)) return n;
+            if (in.kind == IrInput::Kind::Node && ir_.nodes[static_cast<std::size_t>(in.node)].shade_only)
+                return shade_root(in.node);
+        }
+        return n;
+    }
+
     void lower_output(const std::string& name, const Binding& b) {
         const GraphOutputSpec* spec = nullptr;
         for (const auto& s : graph_output_specs())
@@ -280,11 +292,11 @@ private:
         }
         if (name == "distance" && in->kind == IrInput::Kind::Node &&
             ir_.nodes[static_cast<std::size_t>(in->node)].shade_only) {
-            const auto& src = ir_.nodes[static_cast<std::size_t>(in->node)];
-            diag_.error(fmt::format("the distance depends on node \"{}\", which only works while shading a hit "
-                                    "(it reads the normal or calls the scene distance)",
-                                    src.id),
-                        b.pointer, src.id);
+            const IrNode& culprit = shade_root(in->node);
+            diag_.error(fmt::format("the distance depends on node \"{}\" ({}), which only works while shading a hit "
+                                    "(it reads the normal or the view, or calls the scene distance)",
+                                    culprit.id, culprit.def->type),
+                        b.pointer, culprit.id);
             return;
         }
         ir_.outputs[name] = *in;

@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# One entry point for setting up, building and running Fractograph on Debian 12.
+#   bash scripts/fractograph.sh demo   install, build, compile a gallery graph, render a stereo frame
+#   bash scripts/fractograph.sh test   install, build, run every test (and the fuzzers briefly)
+#   bash scripts/fractograph.sh build  install and build only
+# Idempotent: packages already installed are not touched, and a built tree only rebuilds what changed.
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+BUILD=${FG_BUILD_DIR:-$ROOT/build}
+JOBS=${FG_JOBS:-$(nproc)}
+
+BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config)
+LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev spirv-cross libvulkan-dev
+  mesa-vulkan-drivers vulkan-tools vulkan-validationlayers libglm-dev nlohmann-json3-dev libopenxr-dev
+  libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libstb-dev libcli11-dev libfmt-dev
+  libspdlog-dev libxxhash-dev)
+TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib clang libclang-rt-14-dev)
+
+say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
+
+install_packages() {
+  local missing=()
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  say "installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -ne 0 ] && sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+build() {
+  if [ ! -f "$BUILD/build.ninja" ]; then
+    say "configuring $BUILD"
+    cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  fi
+  say "building (log: $BUILD/build.log)"
+  run_logged "$BUILD/build.log" cmake --build "$BUILD" -j "$JOBS"
+}
+
+# Run a command with its output in a log; show progress every 50 steps and the log's end on failure.
+run_logged() {
+  local log=$1; shift
+  set +e
+  "$@" >"$log" 2>&1 &
+  local pid=$! last=""
+  while kill -0 "$pid" 2>/dev/null; do
+    sleep 5
+    local now
+    now=$(grep -o -E '^\[[0-9]+/[0-9]+\]' "$log" | tail -1)
+    [ -n "$now" ] && [ "$now" != "$last" ] && { echo "    $now"; last=$now; }
+  done
+  wait "$pid"
+  local rc=$?
+  set -e
+  if [ $rc -ne 0 ]; then tail -60 "$log"; echo "failed: $*"; exit 1; fi
+}
+
+# Headless runs use Mesa's lavapipe; keep its shader cache out of the home folder.
+export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$BUILD/mesa-cache}
+
+demo() {
+  install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}"
+  build
+  local out=$ROOT/out/demo
+  mkdir -p "$out"
+  say "compiling graphs/gallery/mandelbulb.json"
+  "$BUILD/compiler/fgc" compile "$ROOT/graphs/gallery/mandelbulb.json" -o "$out/mandelbulb.fgpack"
+  if [ -x "$BUILD/runtime/fgplay" ]; then
+    say "rendering a stereo frame headless on lavapipe"
+    "$BUILD/runtime/fgplay" render "$out/mandelbulb.fgpack" --out "$out" --size 512x512
+    say "images: $out/left.png $out/right.png $out/side_by_side.png"
+  fi
+}
+
+run_fuzzers() {
+  local fuzz=$BUILD-fuzz seconds=${FG_FUZZ_SECONDS:-30}
+  if [ ! -f "$fuzz/build.ninja" ]; then
+    CC=clang CXX=clang++ cmake -S "$ROOT" -B "$fuzz" -G Ninja -DFG_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  fi
+  run_logged "$fuzz/build.log" cmake --build "$fuzz" -j "$JOBS"
+  for target in fuzz_graph_loader fuzz_pack_reader; do
+    say "fuzzing $target for ${seconds}s"
+    local corpus=$fuzz/corpus/$target
+    mkdir -p "$corpus"
+    if ! "$fuzz/tests/fuzz/$target" -max_total_time="$seconds" -print_final_stats=1 -close_fd_mask=3 \
+        "$corpus" "$ROOT/tests/fuzz/corpus/${target#fuzz_}" >"$fuzz/$target.log" 2>&1; then
+      tail -40 "$fuzz/$target.log"; echo "$target found a crash"; exit 1
+    fi
+    grep -E '^stat::number_of_executed_units' "$fuzz/$target.log" || true
+  done
+}
+
+test_all() {
+  install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
+  build
+  say "running tests"
+  (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" --timeout 1500)
+  run_fuzzers
+  say "all tests passed"
+}
+
+case "${1:-}" in
+  demo) demo ;;
+  test) test_all ;;
+  build) install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}"; build ;;
+  *) echo "usage: $0 demo|test|build" >&2; exit 2 ;;
+esac

@@ -1,0 +1,116 @@
+// The compiler finds which effects a scene uses, emits code only for those and lists them in the
+// manifest, so the runtime allocates and runs nothing else.
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+using fg::Effect;
+using fg::test::compile_text;
+using fg::test::minimal_graph;
+using nlohmann::json;
+
+namespace {
+
+fg::CompileResult compile(const json& g) {
+    fg::Diagnostics diag;
+    auto r = compile_text(g.dump(), diag);
+    EXPECT_TRUE(r) << diag.format();
+    return r ? std::move(*r) : fg::CompileResult{};
+}
+
+bool has_pass(const fg::CompileResult& r, const std::string& name) { return r.manifest.find_pass(name) != nullptr; }
+
+const std::string& glsl(const fg::CompileResult& r, const std::string& pass) {
+    for (const auto& p : r.passes)
+        if (p.source.name == pass) return p.source.glsl;
+    static const std::string none;
+    return none;
+}
+
+}  // namespace
+
+TEST(EffectSet, a_scene_without_fog_glow_or_vignette_gets_no_post_pass) {
+    auto r = compile(minimal_graph());
+    EXPECT_FALSE(r.manifest.effects.has(Effect::Fog));
+    EXPECT_FALSE(r.manifest.effects.has(Effect::Glow));
+    EXPECT_FALSE(has_pass(r, "post"));
+    EXPECT_EQ(glsl(r, "shade").find("#define FG_HAS_POST"), std::string::npos);
+}
+
+TEST(EffectSet, fog_in_the_scene_adds_the_effect_and_the_post_pass) {
+    auto g = minimal_graph();
+    g["scene"]["fog"] = {{"density", 0.2}};
+    auto r = compile(g);
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Fog));
+    EXPECT_FALSE(r.manifest.effects.has(Effect::Glow));
+    ASSERT_TRUE(has_pass(r, "post"));
+    // No glow image is bound by any pass.
+    for (const auto& p : r.manifest.passes)
+        for (const auto& b : p.bindings) EXPECT_NE(b.name, "fg_glow") << p.name;
+}
+
+TEST(EffectSet, glow_adds_a_glow_image_to_the_march_and_post_passes) {
+    auto g = minimal_graph();
+    g["scene"]["glow"] = {{"intensity", 0.5}};
+    auto r = compile(g);
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Glow));
+    for (const char* pass : {"naive", "conemarch", "post"}) {
+        bool bound = false;
+        for (const auto& b : r.manifest.find_pass(pass)->bindings) bound |= b.name == "fg_glow";
+        EXPECT_TRUE(bound) << pass;
+    }
+}
+
+TEST(EffectSet, the_trap_effect_comes_only_from_using_a_trap_output) {
+    json g = minimal_graph();
+    g["nodes"].push_back({{"id", "bulb"}, {"type", "fractal.mandelbulb"}});
+    g["outputs"]["distance"] = "bulb.distance";
+    EXPECT_FALSE(compile(g).manifest.effects.has(Effect::OrbitTrap));
+    g["nodes"].push_back({{"id", "split"}, {"type", "math.split4"}, {"inputs", {{"v", "bulb.trap"}}}});
+    g["nodes"][1]["inputs"]["t"] = "split.w";
+    EXPECT_TRUE(compile(g).manifest.effects.has(Effect::OrbitTrap));
+}
+
+TEST(EffectSet, fake_lighting_nodes_add_their_effects_and_no_normals) {
+    auto g = minimal_graph();
+    g["nodes"].push_back({{"id", "light"}, {"type", "light.fake_diffuse"}});
+    g["nodes"].push_back({{"id", "occ"}, {"type", "light.fake_ao"}});
+    g["outputs"]["diffuse"] = "light";
+    g["outputs"]["ao"] = "occ";
+    auto r = compile(g);
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Diffuse));
+    EXPECT_TRUE(r.manifest.effects.has(Effect::AmbientOcclusion));
+    EXPECT_FALSE(r.manifest.effects.has(Effect::Normals));
+    EXPECT_EQ(glsl(r, "shade").find("#define FG_HAS_NORMALS"), std::string::npos);
+}
+
+TEST(EffectSet, an_unbound_diffuse_falls_back_to_lambert_and_needs_normals) {
+    auto r = compile(minimal_graph());
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Normals));
+    EXPECT_FALSE(r.manifest.effects.has(Effect::Diffuse));
+}
+
+TEST(EffectSet, code_of_unused_effects_is_not_in_the_spirv) {
+    auto plain = compile(minimal_graph());
+    auto g = minimal_graph();
+    g["scene"]["fog"] = {{"density", 0.2}};
+    g["scene"]["glow"] = {{"intensity", 0.5}};
+    auto fancy = compile(g);
+    // The naive pass writes a glow image only when glow is used: its SPIR-V grows with it.
+    std::size_t plain_words = 0, fancy_words = 0;
+    for (const auto& p : plain.passes)
+        if (p.source.name == "naive") plain_words = p.spirv.size();
+    for (const auto& p : fancy.passes)
+        if (p.source.name == "naive") fancy_words = p.spirv.size();
+    EXPECT_LT(plain_words, fancy_words);
+}
+
+TEST(EffectSet, scene_settings_turn_on_vignette_and_background_gradient) {
+    auto g = minimal_graph();
+    g["scene"]["vignette"] = {{"strength", 0.3}};
+    g["scene"]["background"] = {{"top", {0.2, 0.3, 0.5}}, {"bottom", {0.0, 0.0, 0.0}}};
+    auto r = compile(g);
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Vignette));
+    EXPECT_TRUE(r.manifest.effects.has(Effect::BackgroundGradient));
+    EXPECT_TRUE(has_pass(r, "post"));
+}

@@ -1,0 +1,63 @@
+#pragma once
+// Helpers for compiler tests: a small valid graph to start from, and matchers for diagnostics.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/diagnostics.h"
+#include "compiler.h"
+
+namespace fg::test {
+
+// A sphere with a palette: valid, small, and every part a test may want to break.
+inline nlohmann::json minimal_graph() {
+    return nlohmann::json::parse(R"({
+      "format": "fractograph-graph",
+      "version": 1,
+      "name": "test",
+      "params": {"radius": {"type": "float", "default": 1.0, "min": 0.1, "max": 2.0}},
+      "nodes": [
+        {"id": "ball", "type": "prim.sphere", "inputs": {"radius": "$radius"}},
+        {"id": "tone", "type": "palette.cosine", "inputs": {"t": 0.3}}
+      ],
+      "outputs": {"distance": "ball.distance", "albedo": "tone.color"}
+    })");
+}
+
+inline std::string read_source_file(const std::string& relative) {
+    std::ifstream in(std::string(FG_SOURCE_DIR) + "/" + relative, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// Runs the front end (load, IR, folding) and returns the diagnostics.
+inline Diagnostics check_front(const std::string& text) {
+    Diagnostics diag;
+    load_and_lower(text, NodeLibrary::builtin(), diag);
+    return diag;
+}
+inline Diagnostics check_front(const nlohmann::json& j) { return check_front(j.dump()); }
+
+// The whole compiler, GLSL and SPIR-V included.
+inline std::optional<CompileResult> compile_text(const std::string& text, Diagnostics& diag) {
+    return compile_graph(text, NodeLibrary::builtin(), {}, diag);
+}
+
+// True if some error's pointer and node match and its message contains `text`.
+inline ::testing::AssertionResult has_error(const Diagnostics& diag, const std::string& pointer,
+                                            const std::string& node, const std::string& text) {
+    for (const auto& d : diag.items())
+        if (d.severity == Severity::Error && d.pointer == pointer && d.node_id == node &&
+            d.message.find(text) != std::string::npos)
+            return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "no error at '" << pointer << "' (node '" << node << "') containing '"
+                                         << text << "'; got:\n"
+                                         << diag.format();
+}
+
+}  // namespace fg::test
