@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 12> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 13> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -44,9 +44,11 @@ inline constexpr std::array<GlobalKnob, 12> kGlobalKnobs{{
     {10, "miss_on_step_cap", "FG_MISS_ON_STEP_CAP", ValueType::Bool, 0, 0, 1,
      "a ray that runs out of steps counts as a miss (1) or a hit where it stopped (0)"},
     {11, "reproject_steps", "FG_REPROJECT_STEPS", ValueType::Int, 32, 1, 512,
-     "screen-space steps of the stereo reprojection search per level"},
-    {12, "reproject_fixup_steps", "FG_FIXUP_STEPS", ValueType::Int, 24, 0, 1024,
-     "sphere-tracing steps after reprojection (fix-up march)"},
+     "centre-image cells the stereo reprojection walks per level before refining"},
+    {12, "reproject_fixup_steps", "FG_FIXUP_STEPS", ValueType::Int, 24, 1, 1024,
+     "sphere-tracing steps after reprojection before walking the centre levels again (fix-up march)"},
+    {13, "reproject_trust_depth", "FG_REPROJECT_TRUST_DEPTH", ValueType::Bool, 0, 0, 1,
+     "reprojection trusts the centre eye's full-resolution hit depth (the seeds' choice: closer, not conservative)"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -12,9 +12,10 @@ struct FgView {
 
 layout(set = 0, binding = 0, std140) uniform FgFrame {
     FgView views[3];     // 0 left, 1 right, 2 centre
-    uvec4 size;          // x, y full-resolution size; z frame index; w unused
+    uvec4 size;          // xy eye image size, zw centre-eye image size (wider: it covers both eyes)
+    uvec4 info;          // x frame index, y cone levels, zw unused
     vec4 time;           // x seconds, y world scale, z interpupillary distance (scene units), w unused
-    vec4 pixel;          // x tangent of the half-diagonal of one full-resolution pixel, y, z, w unused
+    vec4 pixel;          // x tangent of the half-diagonal of one full-resolution pixel; y tangent per pixel
 } fg_frame;
 
 layout(set = 0, binding = 1, std140) uniform FgScene {
@@ -47,28 +48,52 @@ vec3 fg_ray_origin(int view)
     return fg_frame.views[view].origin.xyz;
 }
 
-// The interval [near, far] of a ray inside the scene bounds, grown by `margin` (cone radius per
-// unit distance) so a cone around the ray is inside whenever any of its rays is. Empty: near > far.
-vec2 fg_bounds_interval(vec3 ro, vec3 rd, float margin)
+// The interval [near, far] of distances along a ray where it can meet the scene bounds (a sphere),
+// clipped to the far limit. With cone_tan > 0 the interval covers every ray of the cone of that
+// half-angle around rd: the cone must point at the sphere, and any point of the sphere is between
+// |c - ro| - r and |c - ro| + r from the origin. Empty when near > far.
+vec2 fg_bounds_interval(vec3 ro, vec3 rd, float cone_tan)
 {
-    vec3 oc = ro - fg_scene.bounds.xyz;
-    float b = dot(oc, rd);
-    float c = dot(oc, oc);
+    vec3 oc = fg_scene.bounds.xyz - ro;
     float radius = fg_scene.bounds.w;
-    // The grown sphere radius at distance t is radius + margin * t; use the far limit's growth.
-    float grown = radius + margin * fg_scene.misc.y;
-    float h = b * b - (c - grown * grown);
+    float far = fg_scene.misc.y;
+    if (cone_tan > 0.0) {
+        float dist = length(oc);
+        if (dist > radius) {
+            float to_centre = acos(clamp(dot(oc, rd) / dist, -1.0, 1.0));
+            if (to_centre > atan(cone_tan) + asin(radius / dist)) return vec2(1.0, 0.0);
+        }
+        return vec2(max(dist - radius, 0.0), min(dist + radius, far));
+    }
+    float b = dot(oc, rd);
+    float h = b * b - (dot(oc, oc) - radius * radius);
     if (h < 0.0) return vec2(1.0, 0.0);
     h = sqrt(h);
-    return vec2(max(-b - h, 0.0), min(-b + h, fg_scene.misc.y));
+    return vec2(max(b - h, 0.0), min(b + h, far));
 }
 
-// Radius of a pixel's cone at distance t, for a pixel 2^level full-resolution pixels wide.
+// tan of the half-angle of the cone through a pixel 2^level full-resolution pixels wide. The
+// half-diagonal in the tangent plane bounds the angle from above, so the cone covers the pixel.
 float fg_cone_tan(int level)
 {
-    // tan of the cone's half-angle; the tangent-plane half-diagonal bounds the angle from above.
     return tan(min(fg_frame.pixel.x * float(1 << level), 1.5));
 }
 
-// Counting distance evaluations: a buffer of per-pass totals, compiled out unless the knob is on.
+ivec2 fg_view_size(int view)
+{
+    return ivec2(view == 2 ? fg_frame.size.zw : fg_frame.size.xy);
+}
+
+// Conemarch levels live in one atlas image per view: level 0 at the origin, level k >= 1 stacked in
+// a column to its right. Returns (origin.xy, size.xy) of a level.
+ivec4 fg_level_rect(int level, ivec2 full)
+{
+    if (level == 0) return ivec4(0, 0, full);
+    int y = 0;
+    for (int k = 1; k < level; ++k) y += (full.y + (1 << k) - 1) >> k;
+    ivec2 size = (full + ivec2((1 << level) - 1)) >> level;
+    return ivec4(full.x, y, size);
+}
+
+// A miss in a depth image. Depths are distances along the ray, never NaN or infinite.
 #define FG_MISS (-1.0)
