@@ -132,6 +132,7 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
         mp.bindings = refl->bindings;
         mp.push_constant_size = refl->push_constant_size;
         mp.spec_constants = refl->spec_constants;
+        for (const auto& [block, layout] : refl->uniform_blocks) m.uniform_blocks[block] = layout.size;
         if (auto it = refl->uniform_blocks.find("FgParams"); it != refl->uniform_blocks.end()) {
             // Reflection and our own std140 layout must agree, or the runtime would write wrong bytes.
             for (const auto& p : m.params) {

@@ -51,6 +51,15 @@ struct KeyTracker {
 
 }  // namespace
 
+namespace {
+// Deeper documents are refused: copying and walking nested JSON recurses, and no graph or
+// manifest needs more than a handful of levels.
+constexpr int kMaxDepth = 64;
+struct TooDeep {
+    std::string pointer;
+};
+}  // namespace
+
 std::optional<nlohmann::json> parse_json_text(std::string_view text, Diagnostics& diag) {
     bool blank = true;
     for (char c : text)
@@ -61,10 +70,11 @@ std::optional<nlohmann::json> parse_json_text(std::string_view text, Diagnostics
     }
     KeyTracker keys;
     using nlohmann::json;
-    json::parser_callback_t cb = [&keys](int, json::parse_event_t event, json& parsed) {
+    json::parser_callback_t cb = [&keys](int depth, json::parse_event_t event, json& parsed) {
         switch (event) {
             case json::parse_event_t::object_start:
             case json::parse_event_t::array_start: {
+                if (depth >= kMaxDepth) throw TooDeep{keys.pointer()};
                 KeyTracker::Level l;
                 l.is_object = event == json::parse_event_t::object_start;
                 keys.stack.push_back(std::move(l));
@@ -92,6 +102,8 @@ std::optional<nlohmann::json> parse_json_text(std::string_view text, Diagnostics
         for (const auto& p : keys.duplicates) diag.error("key given twice; JSON keeps only the last, so say it once", p);
         if (!keys.duplicates.empty()) return std::nullopt;
         return j;
+    } catch (const TooDeep& deep) {
+        diag.error(fmt::format("nested more than {} levels deep", kMaxDepth), deep.pointer);
     } catch (const json::parse_error& e) {
         std::string what = e.what();
         // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line 1, column 2: ".

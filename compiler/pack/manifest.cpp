@@ -147,6 +147,7 @@ json manifest_to_json(const PackManifest& m) {
                                  {"bias_spec", f.bias_spec},
                                  {"iterations_spec", f.iterations_spec}});
     j["scene"] = m.scene;
+    j["uniform_blocks"] = m.uniform_blocks;
     return j;
 }
 
@@ -254,7 +255,8 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
             if (auto* sc = r.array(pj, "spec_constants", ptr)) {
                 for (std::size_t k = 0; k < sc->size(); ++k) {
                     const auto& idj = (*sc)[k];
-                    if (!idj.is_number_unsigned() || !m.find_spec(idj.get<std::uint32_t>()))
+                    if (!idj.is_number_unsigned() || idj.get<std::uint64_t>() > 0xffffffffull ||
+                        !m.find_spec(idj.get<std::uint32_t>()))
                         r.fail("refers to a specialization constant the manifest does not list",
                                fmt::format("{}/spec_constants/{}", ptr, k));
                     else
@@ -301,6 +303,16 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
                 r.fail("iterations_spec names no specialization constant", ptr);
             m.fractals.push_back(f);
         }
+    }
+    if (auto* ub = r.field(j, "uniform_blocks", "")) {
+        if (!ub->is_object()) r.fail("\"uniform_blocks\" must be an object of name -> size", "/uniform_blocks");
+        else
+            for (auto it = ub->begin(); it != ub->end(); ++it) {
+                if (!it.value().is_number_unsigned() || it.value().get<std::uint64_t>() > 65536)
+                    r.fail("a block size is an unsigned integer up to 65536", "/uniform_blocks/" + it.key());
+                else
+                    m.uniform_blocks[it.key()] = it.value().get<std::uint32_t>();
+            }
     }
     if (auto* sj = r.field(j, "scene", "")) {
         Diagnostics scene_diag;

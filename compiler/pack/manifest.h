@@ -2,6 +2,7 @@
 // The pack manifest: what the runtime needs to play a pack without knowing the graph. Written by
 // the compiler as JSON (MANI chunk), read back and checked for consistency by the pack reader.
 #include <array>
+#include <map>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -75,6 +76,7 @@ struct PackManifest {
     std::vector<std::string> lipschitz_notes;
     std::vector<ManifestFractal> fractals;
     nlohmann::json scene = nlohmann::json::object();   // scene settings (graph/scene_settings.h)
+    std::map<std::string, std::uint32_t> uniform_blocks;  // block type name -> size, from reflection
 
     const ManifestPass* find_pass(const std::string& name) const;
     const ManifestSpecConstant* find_spec(const std::string& name) const;

@@ -5,6 +5,7 @@
 #include <set>
 #include <xxhash.h>
 
+#include "graph/json_text.h"
 #include "pack_format.h"
 
 namespace fg {
@@ -163,6 +164,12 @@ private:
         bool have_graph = false;
         for (const auto& [info, payload] : chunks) {
             std::string tag = tag_text(info.tag);
+            bool unique_kind = info.tag == kTagManifest || info.tag == kTagGraph || info.tag == kTagSourceMap;
+            if (unique_kind && !info.name.empty()) {
+                fail(info.offset, fmt::format("chunk '{}' has a name ('{}'); a pack has one unnamed {} chunk", tag,
+                                              info.name, tag));
+                return std::nullopt;
+            }
             if (!seen.insert({tag, info.name}).second) {
                 fail(info.offset, fmt::format("chunk '{}' {} appears twice", tag, info.name));
                 return std::nullopt;
@@ -183,12 +190,13 @@ private:
                 pack_.graph = text;
                 have_graph = true;
             } else if (info.tag == kTagSourceMap) {
-                try {
-                    pack_.source_map = nlohmann::json::parse(text);
-                } catch (const nlohmann::json::exception&) {
-                    fail(info.offset, "the source map chunk is not valid JSON");
+                Diagnostics json_diag;
+                auto map = parse_json_text(text, json_diag);
+                if (!map || !map->is_object()) {
+                    fail(info.offset, "the source map chunk is not a JSON object");
                     return std::nullopt;
                 }
+                pack_.source_map = std::move(*map);
             } else if (info.tag == kTagGlsl) {
                 pack_.glsl[info.name] = text;
             } else if (pack_.version_minor <= kPackVersionMinor) {
@@ -205,12 +213,16 @@ private:
             fail(kHeaderSize, "the pack has no source graph chunk (GRPH)");
             return std::nullopt;
         }
-        try {
-            pack_.manifest_json =
-                nlohmann::json::parse(std::string(reinterpret_cast<const char*>(manifest_bytes.data()), manifest_bytes.size()));
-        } catch (const nlohmann::json::exception&) {
-            fail(manifest_chunk->offset, "the manifest chunk is not valid JSON");
-            return std::nullopt;
+        {
+            Diagnostics json_diag;
+            auto parsed = parse_json_text(
+                std::string_view(reinterpret_cast<const char*>(manifest_bytes.data()), manifest_bytes.size()), json_diag);
+            if (!parsed) {
+                std::string why = json_diag.items().empty() ? "" : ": " + json_diag.items().front().message;
+                fail(manifest_chunk->offset, "the manifest chunk is not valid JSON" + why);
+                return std::nullopt;
+            }
+            pack_.manifest_json = std::move(*parsed);
         }
         Diagnostics manifest_diag;
         auto m = manifest_from_json(pack_.manifest_json, manifest_diag);
@@ -232,8 +244,12 @@ private:
                 fail(manifest_chunk->offset, fmt::format("SPIR-V chunk '{}' belongs to no pass in the manifest", name));
                 consistent = false;
             }
-        if (XXH64(pack_.graph.data(), pack_.graph.size(), 0) !=
-            std::strtoull(pack_.manifest.graph_hash.c_str(), nullptr, 16)) {
+        for (const auto& [name, _] : pack_.glsl)
+            if (!pack_.manifest.find_pass(name)) {
+                fail(manifest_chunk->offset, fmt::format("GLSL chunk '{}' belongs to no pass in the manifest", name));
+                consistent = false;
+            }
+        if (fmt::format("{:016x}", XXH64(pack_.graph.data(), pack_.graph.size(), 0)) != pack_.manifest.graph_hash) {
             fail(manifest_chunk->offset, "the manifest's graph hash does not match the source graph chunk");
             consistent = false;
         }

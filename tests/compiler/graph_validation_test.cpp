@@ -229,3 +229,10 @@ TEST(GraphValidation, error_messages_are_formatted_with_the_file_pointer_and_nod
     auto text = check_front(g).format("scene.json");
     EXPECT_NE(text.find("scene.json: error: /nodes/0/type (node 'ball'): unknown node type"), std::string::npos) << text;
 }
+
+TEST(GraphValidation, a_deeply_nested_document_is_refused_without_exhausting_the_stack) {
+    const std::size_t depth = 200000;
+    std::string text = R"({"format": "fractograph-graph", "version": 1, "comment": )" + std::string(depth, '[') +
+                       std::string(depth, ']') + "}";
+    EXPECT_TRUE(has_error(check_front(text), "/comment/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0", "", "nested more than 64 levels deep"));
+}

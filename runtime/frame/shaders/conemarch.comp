@@ -48,7 +48,7 @@ void main()
 
     if (pc.level > 0) {
         // Coarse level: advance while the whole cone is provably empty.
-        float cone = fg_cone_tan(pc.level) * FG_CONE_SCALE;
+        float cone = fg_cone_tan(pc.level);
         vec2 range = fg_bounds_interval(ro, rd, cone);
         float t = max(parent, range.x);
         bool touched = false;
@@ -56,7 +56,8 @@ void main()
             float d = fg_scene_distance(ro + rd * t) * FG_STEP_SCALE;
             evaluations++;
             float radius = cone * t;
-            if (d <= radius) {
+            // Stepping approaches d = radius only geometrically: stop a little before it.
+            if (d <= FG_CONE_STOP * radius) {
                 touched = true;
                 break;
             }
@@ -92,7 +93,7 @@ void main()
                 }
                 closest = min(closest, d);
                 float radius = cone * t;
-                if (bound > range.y && d <= radius) bound = t;
+                if (bound > range.y && d <= FG_CONE_STOP * radius) bound = t;
                 if (d < FG_EPSILON * radius) {
                     hit = true;
                     break;

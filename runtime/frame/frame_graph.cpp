@@ -1,0 +1,118 @@
+#include "frame_graph.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <stdexcept>
+
+namespace fg {
+
+const char* stereo_mode_name(StereoMode m) {
+    switch (m) {
+        case StereoMode::Reproject: return "reproject";
+        case StereoMode::PerEye: return "per-eye";
+        case StereoMode::Naive: return "naive";
+    }
+    return "?";
+}
+
+bool parse_stereo_mode(const std::string& s, StereoMode& out) {
+    for (auto m : {StereoMode::Reproject, StereoMode::PerEye, StereoMode::Naive})
+        if (s == stereo_mode_name(m)) {
+            out = m;
+            return true;
+        }
+    return false;
+}
+
+const char* image_format_name(ImageFormat f) {
+    switch (f) {
+        case ImageFormat::R32F: return "r32f";
+        case ImageFormat::RG32F: return "rg32f";
+        case ImageFormat::RGBA16F: return "rgba16f";
+        case ImageFormat::RGBA8: return "rgba8";
+    }
+    return "?";
+}
+
+const char* view_name(int view) { return view == kLeftView ? "left" : view == kRightView ? "right" : "centre"; }
+
+const FrameImage* FrameGraph::find_image(const std::string& name) const {
+    for (const auto& i : images_)
+        if (i.name == name) return &i;
+    return nullptr;
+}
+
+void FrameGraph::add_image(FrameImage image) {
+    if (!find_image(image.name)) images_.push_back(std::move(image));
+}
+
+void FrameGraph::add_pass(FramePass pass) { passes_.push_back(std::move(pass)); }
+
+std::int32_t FrameGraph::counter_slot(const std::string& group) {
+    auto it = std::find(counter_groups_.begin(), counter_groups_.end(), group);
+    if (it != counter_groups_.end()) return static_cast<std::int32_t>(it - counter_groups_.begin());
+    counter_groups_.push_back(group);
+    return static_cast<std::int32_t>(counter_groups_.size() - 1);
+}
+
+FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& settings, std::uint32_t centre_width,
+                             std::uint32_t centre_height) {
+    FrameGraph g;
+    g.width = settings.width;
+    g.height = settings.height;
+    g.centre_width = centre_width;
+    g.centre_height = centre_height;
+    g.settings = settings;
+    g.effects = manifest.effects;
+    g.has_post = manifest.find_pass("post") != nullptr;
+    auto require = [&](const char* program) {
+        if (!manifest.find_pass(program))
+            throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", program));
+    };
+    require("shade");
+    switch (settings.stereo) {
+        case StereoMode::Naive:
+            require("naive");
+            for (int eye : {kLeftView, kRightView}) add_naive_passes(g, eye);
+            break;
+        case StereoMode::PerEye:
+            require("conemarch");
+            for (int eye : {kLeftView, kRightView}) add_conemarch_passes(g, eye);
+            break;
+        case StereoMode::Reproject:
+            require("conemarch");
+            require("reproject");
+            add_conemarch_passes(g, kCentreView);
+            for (int eye : {kLeftView, kRightView}) add_reproject_pass(g, eye);
+            break;
+    }
+    for (int eye : {kLeftView, kRightView}) add_shade_pass(g, eye);
+    if (g.has_post)
+        for (int eye : {kLeftView, kRightView}) add_post_pass(g, eye);
+    return g;
+}
+
+std::string FrameGraph::describe() const {
+    std::string s = fmt::format("frame graph: {} stereo, {}x{} per eye, {} cone levels\n", stereo_mode_name(settings.stereo),
+                                width, height, settings.cone_levels);
+    auto names = effects.names();
+    s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
+    std::size_t bytes = 0;
+    s += fmt::format("images ({}):\n", images_.size());
+    for (const auto& i : images_) {
+        std::size_t px = static_cast<std::size_t>(i.width) * i.height;
+        std::size_t bpp = i.format == ImageFormat::R32F ? 4 : i.format == ImageFormat::RGBA8 ? 4 : 8;
+        if (i.format == ImageFormat::RGBA16F) bpp = 8;
+        bytes += px * bpp;
+        s += fmt::format("  {:<16} {:>5}x{:<5} {:<8} {}\n", i.name, i.width, i.height, image_format_name(i.format), i.about);
+    }
+    s += fmt::format("  ({:.1f} MiB)\n", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    s += fmt::format("passes ({}):\n", passes_.size());
+    for (const auto& p : passes_) {
+        s += fmt::format("  {:<20} {:<10} {:>4}x{:<4} reads [{}] writes [{}]\n", p.label, p.program, p.groups[0],
+                         p.groups[1], fmt::join(p.reads, ", "), fmt::join(p.writes, ", "));
+    }
+    return s;
+}
+
+}  // namespace fg

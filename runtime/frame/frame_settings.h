@@ -1,0 +1,27 @@
+#pragma once
+// How a frame is rendered: what the user or the benchmark chooses, as opposed to what the pack
+// (the scene) decides.
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace fg {
+
+enum class StereoMode {
+    Reproject,   // conemarch the centre eye, reproject to each eye, fix-up march (the seeds' method)
+    PerEye,      // conemarch each eye on its own
+    Naive,       // plain sphere tracing of each eye at full resolution: the baseline
+};
+
+const char* stereo_mode_name(StereoMode m);
+bool parse_stereo_mode(const std::string& s, StereoMode& out);
+
+struct FrameSettings {
+    std::uint32_t width = 256, height = 256;   // per eye
+    StereoMode stereo = StereoMode::PerEye;
+    std::uint32_t cone_levels = 5;              // conemarch levels including full resolution
+    bool count_evaluations = false;             // SDF evaluations per pass (a specialization constant)
+    std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
+};
+
+}  // namespace fg

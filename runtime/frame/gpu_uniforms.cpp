@@ -1,0 +1,53 @@
+#include "gpu_uniforms.h"
+
+#include "graph/scene_settings.h"
+
+namespace fg {
+
+namespace {
+std::array<float, 4> v4(const glm::dvec3& v, double w = 0.0) {
+    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(w)};
+}
+GpuView gpu_view(const View& v) {
+    return {v4(v.origin), v4(v.right), v4(v.up), v4(v.forward),
+            {static_cast<float>(v.fov.left), static_cast<float>(v.fov.right), static_cast<float>(v.fov.down),
+             static_cast<float>(v.fov.up)}};
+}
+}  // namespace
+
+GpuFrame make_gpu_frame(const StereoViews& views, std::uint32_t cone_levels, double time, double world_scale,
+                        std::uint32_t frame_index) {
+    GpuFrame f{};
+    f.views[0] = gpu_view(views.left);
+    f.views[1] = gpu_view(views.right);
+    f.views[2] = gpu_view(views.centre);
+    f.size = {views.left.width, views.left.height, views.centre.width, views.centre.height};
+    f.info = {frame_index, cone_levels, 0, 0};
+    f.time = {static_cast<float>(time), static_cast<float>(world_scale), static_cast<float>(views.ipd), 0.0f};
+    f.pixel = {static_cast<float>(views.pixel_half_diagonal), static_cast<float>(views.pixel_tan), 0.0f, 0.0f};
+    return f;
+}
+
+GpuScene make_gpu_scene(const nlohmann::json& scene_json) {
+    Diagnostics ignore;  // the pack reader has already checked the settings
+    SceneSettings s = parse_scene_settings(&scene_json, "/scene", ignore);
+    GpuScene g{};
+    g.light_dir = v4(s.light.direction);
+    g.light_color = v4(s.light.color);
+    g.ambient = v4(s.light.ambient);
+    g.sss_color = v4(s.light.sss_color);
+    g.rim_color = v4(s.light.rim_color);
+    g.albedo = v4(s.albedo);
+    g.bg_top = v4(s.background.top);
+    g.bg_bottom = v4(s.background.bottom);
+    if (s.fog) g.fog = v4(s.fog->color, s.fog->density);
+    if (s.glow) g.glow = v4(s.glow->color * s.glow->intensity, s.glow->falloff);
+    g.bounds = v4(s.bounds_center, s.bounds_radius);
+    g.misc = {static_cast<float>(s.exposure), static_cast<float>(s.max_distance),
+              s.vignette ? static_cast<float>(s.vignette->strength) : 0.0f,
+              s.foveation ? static_cast<float>(s.foveation->inner_radius) : 1.0f};
+    g.misc2 = {s.foveation ? static_cast<float>(s.foveation->blend) : 0.0f, 0.0f, 0.0f, 0.0f};
+    return g;
+}
+
+}  // namespace fg

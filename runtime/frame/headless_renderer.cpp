@@ -1,0 +1,52 @@
+#include "headless_renderer.h"
+
+#include <cstring>
+
+#include "graph/scene_settings.h"
+
+namespace fg {
+
+namespace {
+std::vector<float> floats(const std::vector<std::byte>& bytes) {
+    std::vector<float> out(bytes.size() / 4);
+    std::memcpy(out.data(), bytes.data(), out.size() * 4);
+    return out;
+}
+}  // namespace
+
+HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame,
+                                   const StereoSettings& stereo)
+    : ctx_(ctx), pack_(pack), frame_(frame), stereo_(stereo) {
+    stereo_.width = frame.width;
+    stereo_.height = frame.height;
+    // The frame graph's sizes depend only on the fields of view, not on the pose.
+    views_ = make_stereo_views(scene_camera(), scene_fov(), scene_fov(), stereo_);
+    executor_ = std::make_unique<FrameExecutor>(
+        ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, views_.centre.width, views_.centre.height));
+}
+
+HeadPose HeadlessRenderer::scene_camera() const {
+    Diagnostics ignore;
+    auto s = parse_scene_settings(&pack_.manifest.scene, "/scene", ignore);
+    return look_at(s.camera.position, s.camera.target, s.camera.up);
+}
+
+Fov HeadlessRenderer::scene_fov() const {
+    Diagnostics ignore;
+    auto s = parse_scene_settings(&pack_.manifest.scene, "/scene", ignore);
+    return Fov::symmetric(s.camera.fov_deg, static_cast<double>(frame_.width) / frame_.height);
+}
+
+RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
+    views_ = make_stereo_views(head, scene_fov(), scene_fov(), stereo_);
+    executor_->set_frame(make_gpu_frame(views_, frame_.cone_levels, time, stereo_.world_scale, frame_index));
+    RenderedFrame out;
+    out.stats = executor_->run();
+    out.left = rgba8_from_bytes(executor_->download("final.left"), frame_.width, frame_.height);
+    out.right = rgba8_from_bytes(executor_->download("final.right"), frame_.width, frame_.height);
+    out.depth_left = floats(executor_->download("depth.left"));
+    out.depth_right = floats(executor_->download("depth.right"));
+    return out;
+}
+
+}  // namespace fg

@@ -1,0 +1,43 @@
+#pragma once
+// Headless rendering: a pack, a head pose and a time in, both eyes' images, depths, GPU times and
+// evaluation counts out. Deterministic: the same inputs give the same bytes.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frame_executor.h"
+#include "image_output.h"
+#include "stereo_rig.h"
+
+namespace fg {
+
+struct RenderedFrame {
+    Rgba8Image left, right;
+    std::vector<float> depth_left, depth_right;
+    FrameStats stats;
+};
+
+class HeadlessRenderer {
+public:
+    HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame, const StereoSettings& stereo);
+
+    // The camera the scene starts with (scene.camera), symmetric field of view.
+    HeadPose scene_camera() const;
+    Fov scene_fov() const;
+    const StereoViews& views() const { return views_; }
+    std::string describe() const { return executor_->graph().describe(); }
+
+    RenderedFrame render(const HeadPose& head, double time, std::uint32_t frame_index = 0);
+    FrameExecutor& executor() { return *executor_; }
+
+private:
+    const vk::Context& ctx_;
+    const Pack& pack_;
+    FrameSettings frame_;
+    StereoSettings stereo_;
+    StereoViews views_;
+    std::unique_ptr<FrameExecutor> executor_;
+};
+
+}  // namespace fg

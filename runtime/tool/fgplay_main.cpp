@@ -1,0 +1,68 @@
+// fgplay: plays Fractograph shader packs. Headless to images (render), benchmarks (bench), a
+// desktop window (view) and OpenXR headsets (xr).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "fgplay_render.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"fgplay: plays Fractograph shader packs (.fgpack)"};
+    app.require_subcommand(1);
+    fg::fgplay::RenderOptions r;
+    std::string size = "512x512", stereo = "per-eye", camera;
+    std::vector<std::string> knobs;
+    bool naive = false;
+
+    auto* render = app.add_subcommand("render", "render a stereo frame headless (Mesa lavapipe without a GPU)");
+    render->add_option("pack", r.pack, "shader pack")->required()->check(CLI::ExistingFile);
+    render->add_option("--out", r.out, "output folder")->capture_default_str();
+    render->add_option("--size", size, "per-eye size WxH")->capture_default_str();
+    render->add_option("--ipd", r.ipd_m, "interpupillary distance in metres")->capture_default_str();
+    render->add_option("--camera", camera, "camera position and target: px,py,pz,tx,ty,tz");
+    render->add_option("--stereo", stereo, "reproject | per-eye | naive")->capture_default_str();
+    render->add_flag("--naive", naive, "the baseline: naive per-eye sphere tracing (same as --stereo naive)");
+    render->add_option("--levels", r.cone_levels, "conemarch levels, full resolution included")->capture_default_str();
+    render->add_option("--frames", r.frames, "frames to render (numbered images when more than one)");
+    render->add_option("--time", r.time, "scene time in seconds of the first frame");
+    render->add_option("--knob", knobs, "override an accuracy knob: name=value (fgc info lists them)");
+    render->add_flag("--describe", r.describe, "print the frame graph: passes, images, sizes");
+    render->add_flag("--depth", r.depth, "also write 16-bit depth PNGs");
+    render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
+    render->add_option("--device", r.device, "Vulkan device: index or name substring");
+
+    CLI11_PARSE(app, argc, argv);
+    if (*render) {
+        unsigned w = 0, h = 0;
+        if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384) {
+            fmt::print(stderr, "fgplay: --size must look like 512x512\n");
+            return 2;
+        }
+        r.width = w;
+        r.height = h;
+        if (naive) stereo = "naive";
+        if (!fg::parse_stereo_mode(stereo, r.stereo)) {
+            fmt::print(stderr, "fgplay: --stereo is reproject, per-eye or naive, not '{}'\n", stereo);
+            return 2;
+        }
+        if (!camera.empty()) {
+            std::array<double, 6> c{};
+            if (std::sscanf(camera.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3], &c[4], &c[5]) != 6) {
+                fmt::print(stderr, "fgplay: --camera takes px,py,pz,tx,ty,tz\n");
+                return 2;
+            }
+            r.camera = c;
+        }
+        for (const auto& k : knobs) {
+            auto eq = k.find('=');
+            try {
+                if (eq == std::string::npos) throw std::invalid_argument(k);
+                r.knobs[k.substr(0, eq)] = std::stod(k.substr(eq + 1));
+            } catch (const std::exception&) {
+                fmt::print(stderr, "fgplay: --knob takes name=value, not '{}'\n", k);
+                return 2;
+            }
+        }
+        return fg::fgplay::render(r);
+    }
+    return 2;
+}

@@ -1,0 +1,85 @@
+#include "fgplay_render.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "frame/headless_renderer.h"
+#include "graph/scene_settings.h"
+#include "pack/pack_reader.h"
+#include "vk/context.h"
+#include "vk/vulkan_error.h"
+
+namespace fg::fgplay {
+
+int render(const RenderOptions& o) {
+    Diagnostics diag;
+    auto pack = read_pack_file(o.pack, diag);
+    if (!pack) {
+        fmt::print(stderr, "{}", diag.format(o.pack));
+        return 1;
+    }
+    try {
+        vk::ContextOptions ctx_options;
+        ctx_options.validation = o.validation;
+        ctx_options.device = o.device;
+        ctx_options.require_timestamps = false;
+        vk::Context ctx(ctx_options);
+        FrameSettings frame;
+        frame.width = o.width;
+        frame.height = o.height;
+        frame.stereo = o.stereo;
+        frame.cone_levels = o.cone_levels;
+        frame.count_evaluations = o.count;
+        frame.knobs = o.knobs;
+        Diagnostics ignore;
+        SceneSettings scene = parse_scene_settings(&pack->manifest.scene, "/scene", ignore);
+        StereoSettings stereo;
+        stereo.ipd_m = o.ipd_m;
+        stereo.world_scale = scene.world_scale;
+        HeadlessRenderer renderer(ctx, *pack, frame, stereo);
+        if (o.describe) fmt::print("{}", renderer.describe());
+        HeadPose head = renderer.scene_camera();
+        if (o.camera) {
+            const auto& c = *o.camera;
+            head = look_at({c[0], c[1], c[2]}, {c[3], c[4], c[5]});
+        }
+        std::filesystem::create_directories(o.out);
+        fmt::print("device: {}\n", ctx.device_name());
+        for (int f = 0; f < o.frames; ++f) {
+            RenderedFrame r = renderer.render(head, o.time + f / 90.0, static_cast<std::uint32_t>(f));
+            std::string suffix = o.frames > 1 ? fmt::format("_{:04}", f) : "";
+            auto path = [&](const std::string& name) { return (std::filesystem::path(o.out) / (name + suffix + ".png")).string(); };
+            write_png(path("left"), r.left);
+            write_png(path("right"), r.right);
+            write_png(path("side_by_side"), side_by_side(r.left, r.right));
+            if (o.depth) {
+                write_depth_png16(path("depth_left"), r.depth_left, o.width, o.height, static_cast<float>(scene.max_distance));
+                write_depth_png16(path("depth_right"), r.depth_right, o.width, o.height, static_cast<float>(scene.max_distance));
+            }
+            std::string times;
+            for (const auto& [group, ms] : r.stats.gpu_ms) times += fmt::format(" {} {:.2f} ms,", group, ms);
+            std::string evals;
+            for (const auto& [group, n] : r.stats.evaluations)
+                evals += fmt::format(" {} {:.2f},", group, static_cast<double>(n) / (2.0 * o.width * o.height));
+            fmt::print("frame {}: {} stereo {}x{} per eye; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height,
+                       times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
+            if (o.count)
+                fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,
+                           evals.empty() ? "" : evals.substr(1, evals.size() - 2));
+        }
+        if (ctx.validation_enabled() && ctx.validation_errors() > 0) {
+            fmt::print(stderr, "{} Vulkan validation errors\n", ctx.validation_errors());
+            return 1;
+        }
+        fmt::print("images in {}/: left.png right.png side_by_side.png{}\n", o.out, o.depth ? " depth_left.png depth_right.png" : "");
+    } catch (const vk::VulkanError& e) {
+        fmt::print(stderr, "fgplay: Vulkan: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "fgplay: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace fg::fgplay

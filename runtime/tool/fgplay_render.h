@@ -1,0 +1,33 @@
+#pragma once
+// `fgplay render`: headless stereo frames to images, with GPU times and evaluation counts.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "frame/frame_settings.h"
+
+namespace fg::fgplay {
+
+struct RenderOptions {
+    std::string pack;
+    std::string out = "out";
+    std::uint32_t width = 512, height = 512;
+    double ipd_m = 0.064;
+    std::optional<std::array<double, 6>> camera;   // position, target
+    StereoMode stereo = StereoMode::PerEye;
+    std::uint32_t cone_levels = 5;
+    int frames = 1;
+    double time = 0.0;
+    bool describe = false;
+    bool depth = false;
+    bool count = true;
+    bool validation = false;
+    std::string device;
+    std::map<std::string, double> knobs;
+};
+
+int render(const RenderOptions& o);
+
+}  // namespace fg::fgplay
