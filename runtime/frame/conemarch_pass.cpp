@@ -35,15 +35,14 @@ void add_conemarch_passes(FrameGraph& g, int view) {
         p.label = fmt::format("conemarch.{}.L{}", name, k);
         p.program = "conemarch";
         p.timer = "march";
+        // Every level binds what the program declares; only level 0 writes the depth and glow.
         p.bindings = {{"fg_levels", atlas}, {"fg_depth", depth}};
+        if (glow) p.bindings.push_back({"fg_glow", "glow." + name});
         p.writes = {atlas};
         if (k + 1 < levels) p.reads = {atlas};
         if (k == 0) {
             p.writes.push_back(depth);
-            if (glow) {
-                p.bindings.push_back({"fg_glow", "glow." + name});
-                p.writes.push_back("glow." + name);
-            }
+            if (glow) p.writes.push_back("glow." + name);
         }
         p.counter_slot = slot = g.counter_slot(fmt::format("march.L{}", k));
         p.push = {view, static_cast<std::int32_t>(k), k + 1 == levels ? 1 : 0, slot};

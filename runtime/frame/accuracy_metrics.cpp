@@ -1,0 +1,45 @@
+#include "accuracy_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace fg {
+
+DepthComparison compare_depths(std::span<const float> rendered, std::span<const double> reference,
+                               double pixel_half_diagonal) {
+    DepthComparison c;
+    c.pixels = std::min(rendered.size(), reference.size());
+    std::vector<double> errors;
+    double cone = std::tan(pixel_half_diagonal);
+    for (std::size_t i = 0; i < c.pixels; ++i) {
+        float t = rendered[i];
+        double r = reference[i];
+        if (!std::isfinite(t)) {
+            ++c.not_finite;
+            continue;
+        }
+        bool hit = t >= 0.0f, ref_hit = r >= 0.0;
+        if (hit && ref_hit) {
+            ++c.both_hit;
+            double radius = std::max(cone * r, 1e-12);
+            double e = std::abs(static_cast<double>(t) - r) / radius;
+            errors.push_back(e);
+            if (t - r > radius) ++c.overstepped;
+        } else if (hit) {
+            ++c.only_rendered;
+        } else if (ref_hit) {
+            ++c.only_reference;
+        }
+    }
+    c.misclassified = c.pixels ? static_cast<double>(c.only_rendered + c.only_reference + c.not_finite) / c.pixels : 0.0;
+    if (!errors.empty()) {
+        std::sort(errors.begin(), errors.end());
+        c.median_error = errors[errors.size() / 2];
+        c.p95_error = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
+        c.max_error = errors.back();
+    }
+    return c;
+}
+
+}  // namespace fg

@@ -1,0 +1,52 @@
+#include "runtime_test_support.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace fg::test {
+
+std::string read_source_file(const std::string& relative) {
+    std::ifstream in(std::string(FG_SOURCE_DIR) + "/" + relative, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+Pack compile_pack(const std::string& graph_text) {
+    Diagnostics diag;
+    auto result = compile_graph(graph_text, NodeLibrary::builtin(), {}, diag);
+    if (!result) throw std::runtime_error("compile failed:\n" + diag.format());
+    auto bytes = pack_bytes(*result);
+    auto pack = read_pack(bytes, diag);
+    if (!pack) throw std::runtime_error("pack read failed:\n" + diag.format());
+    return std::move(*pack);
+}
+
+std::unique_ptr<CpuScene> cpu_scene(const Pack& pack) {
+    auto s = std::make_unique<CpuScene>();
+    Diagnostics diag;
+    auto ir = load_and_lower(pack.graph, NodeLibrary::builtin(), diag);
+    if (!ir) throw std::runtime_error(diag.format());
+    s->ir = std::move(*ir);
+    s->evaluator = CpuEvaluator::create(s->ir, diag);
+    if (!s->evaluator) throw std::runtime_error(diag.format());
+    s->settings = s->ir.scene;
+    return s;
+}
+
+vk::Context& shared_context() {
+    static vk::Context ctx([] {
+        vk::ContextOptions o;
+        o.validation = true;
+        return o;
+    }());
+    return ctx;
+}
+
+std::string RuntimeTest::validation_text() {
+    std::string s;
+    for (const auto& m : shared_context().validation_messages()) s += m + "\n";
+    return s;
+}
+
+}  // namespace fg::test

@@ -1,0 +1,45 @@
+#pragma once
+// Runtime tests render real frames on lavapipe with the validation layer on; a validation error
+// fails the test. Packs are compiled from graph text by the real compiler.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "compiler.h"
+#include "cpu/cpu_evaluator.h"
+#include "frame/headless_renderer.h"
+#include "pack/pack_reader.h"
+#include "vk/context.h"
+
+namespace fg::test {
+
+std::string read_source_file(const std::string& relative);
+// Compiles graph text and reads the pack back, as fgplay would.
+Pack compile_pack(const std::string& graph_text);
+// The CPU twin of a pack's graph.
+struct CpuScene {
+    IrGraph ir;
+    std::optional<CpuEvaluator> evaluator;
+    SceneSettings settings;
+};
+std::unique_ptr<CpuScene> cpu_scene(const Pack& pack);
+
+// One Vulkan context for the whole test program (pipeline creation is the slow part on lavapipe).
+vk::Context& shared_context();
+
+class RuntimeTest : public ::testing::Test {
+protected:
+    void SetUp() override { errors_before_ = shared_context().validation_errors(); }
+    void TearDown() override {
+        EXPECT_EQ(shared_context().validation_errors(), errors_before_) << "Vulkan validation errors:\n"
+                                                                          << validation_text();
+    }
+    static std::string validation_text();
+
+private:
+    std::size_t errors_before_ = 0;
+};
+
+}  // namespace fg::test
