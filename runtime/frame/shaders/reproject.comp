@@ -117,10 +117,13 @@ void main()
         bool done = false;
         while (!done) {
             // Skip what the centre eye proves empty, coarse levels first.
+            float before = t;
             for (int level = pc.levels - 1; level >= 0; --level) t = walk_level(level, t, range.y);
             if (t >= range.y) break;
-            // Fix-up: sphere-trace from the bound; come back to the levels if it wanders on.
-            for (int i = 0; i < FG_FIXUP_STEPS && budget > 0; ++i, --budget) {
+            // Fix-up: sphere-trace from the bound. Where the centre eye has no data (the point is
+            // beside or level with it) take one step and look again; else march on for a while.
+            int steps = t > before ? FG_FIXUP_STEPS : 1;
+            for (int i = 0; i < steps && budget > 0; ++i, --budget) {
                 float d = fg_scene_distance(ro + r * t) * FG_STEP_SCALE;
                 evaluations++;
                 closest = min(closest, d);
