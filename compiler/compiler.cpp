@@ -1,6 +1,7 @@
 #include "compiler.h"
 
 #include <chrono>
+#include <future>
 #include <fmt/format.h>
 #include <xxhash.h>
 
@@ -31,6 +32,35 @@ public:
 private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
+
+struct PassBuild {
+    CompiledPass pass;
+    std::optional<PassReflection> reflection;
+    Diagnostics diag;
+    StageTimes times;
+};
+
+// One pass from template to reflected, validated SPIR-V. Runs on its own thread.
+PassBuild build_pass(const PassTemplate& tmpl, const EffectSet& effects, const SceneCodegen& scene,
+                     const std::vector<ManifestSpecConstant>& spec, const CompileOptions& options) {
+    PassBuild b;
+    Stopwatch clock;
+    b.pass.source = assemble_pass(tmpl, effects, scene, spec);
+    b.times.codegen_ms = clock.lap();
+    auto spirv = compile_glsl(tmpl.name, b.pass.source.glsl, b.pass.source.source_map, b.diag);
+    b.times.glslang_ms = clock.lap();
+    if (!spirv) return b;
+    if (options.optimize) {
+        spirv = optimize_spirv(tmpl.name, *spirv, b.diag);
+        if (!spirv) return b;
+    }
+    if (!validate_spirv(tmpl.name, *spirv, b.diag)) return b;
+    b.times.optimize_ms = clock.lap();
+    b.reflection = reflect_spirv(tmpl.name, *spirv, b.diag);
+    b.times.reflect_ms = clock.lap();
+    b.pass.spirv = std::move(*spirv);
+    return b;
+}
 
 }  // namespace
 
@@ -65,6 +95,7 @@ std::optional<IrGraph> load_and_lower(std::string_view graph_text, const NodeLib
 std::optional<CompileResult> compile_graph(std::string_view graph_text, const NodeLibrary& library,
                                            const CompileOptions& options, Diagnostics& diag) {
     CompileResult result;
+    Stopwatch total_clock;
     result.graph_text = std::string(graph_text);
     result.include_glsl = options.include_glsl;
     Stopwatch clock;
@@ -108,32 +139,35 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
 
     // Code generation and the SPIR-V toolchain, pass by pass.
     SceneCodegen scene(*ir, library);
-    for (const auto& tmpl : pass_templates()) {
-        if (!tmpl.runs_with(effects)) continue;
-        Stopwatch pass_clock;
-        CompiledPass pass;
-        pass.source = assemble_pass(tmpl, effects, scene, m.spec_constants);
-        result.times.codegen_ms += pass_clock.lap();
-        auto spirv = compile_glsl(tmpl.name, pass.source.glsl, pass.source.source_map, diag);
-        result.times.glslang_ms += pass_clock.lap();
-        if (!spirv) continue;
-        if (options.optimize) {
-            spirv = optimize_spirv(tmpl.name, *spirv, diag);
-            if (!spirv) continue;
-        }
-        if (!validate_spirv(tmpl.name, *spirv, diag)) continue;
-        result.times.optimize_ms += pass_clock.lap();
-        auto refl = reflect_spirv(tmpl.name, *spirv, diag);
-        result.times.reflect_ms += pass_clock.lap();
-        if (!refl) continue;
+    // Passes are independent: compile them on all cores (glslang and SPIRV-Tools dominate the time).
+    std::vector<const PassTemplate*> templates;
+    for (const auto& tmpl : pass_templates())
+        if (tmpl.runs_with(effects)) templates.push_back(&tmpl);
+    std::vector<PassBuild> builds(templates.size());
+    {
+        std::vector<std::future<void>> jobs;
+        for (std::size_t i = 0; i < templates.size(); ++i)
+            jobs.push_back(std::async(std::launch::async, [&, i] {
+                builds[i] = build_pass(*templates[i], effects, scene, m.spec_constants, options);
+            }));
+        for (auto& j : jobs) j.get();
+    }
+    for (auto& b : builds) {
+        diag.append(b.diag);
+        result.times.codegen_ms += b.times.codegen_ms;
+        result.times.glslang_ms += b.times.glslang_ms;
+        result.times.optimize_ms += b.times.optimize_ms;
+        result.times.reflect_ms += b.times.reflect_ms;
+        if (!b.reflection) continue;
+        const PassReflection& refl = *b.reflection;
         ManifestPass mp;
-        mp.name = tmpl.name;
-        mp.local_size = refl->local_size;
-        mp.bindings = refl->bindings;
-        mp.push_constant_size = refl->push_constant_size;
-        mp.spec_constants = refl->spec_constants;
-        for (const auto& [block, layout] : refl->uniform_blocks) m.uniform_blocks[block] = layout.size;
-        if (auto it = refl->uniform_blocks.find("FgParams"); it != refl->uniform_blocks.end()) {
+        mp.name = b.pass.source.name;
+        mp.local_size = refl.local_size;
+        mp.bindings = refl.bindings;
+        mp.push_constant_size = refl.push_constant_size;
+        mp.spec_constants = refl.spec_constants;
+        for (const auto& [block, layout] : refl.uniform_blocks) m.uniform_blocks[block] = layout.size;
+        if (auto it = refl.uniform_blocks.find("FgParams"); it != refl.uniform_blocks.end()) {
             // Reflection and our own std140 layout must agree, or the runtime would write wrong bytes.
             for (const auto& p : m.params) {
                 auto off = it->second.offsets.find(p.name);
@@ -142,9 +176,9 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
             }
         }
         m.passes.push_back(mp);
-        pass.spirv = std::move(*spirv);
-        result.passes.push_back(std::move(pass));
+        result.passes.push_back(std::move(b.pass));
     }
+    result.times.wall_ms = total_clock.lap();
     if (diag.has_errors()) return std::nullopt;
     result.ir = std::move(*ir);
     return result;

@@ -34,7 +34,9 @@ struct CompiledPass {
 };
 
 struct StageTimes {
+    // Stage times summed over passes (which run in parallel), and the wall-clock total.
     double load_ms = 0, ir_ms = 0, analysis_ms = 0, codegen_ms = 0, glslang_ms = 0, optimize_ms = 0, reflect_ms = 0;
+    double wall_ms = 0;
     double total_ms() const { return load_ms + ir_ms + analysis_ms + codegen_ms + glslang_ms + optimize_ms + reflect_ms; }
 };
 

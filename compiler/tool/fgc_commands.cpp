@@ -117,9 +117,9 @@ int compile(const Common& c, const std::string& graph, const std::string& output
     }
     if (verbose) {
         const auto& t = result->times;
-        fmt::print("  time:       {:.1f} ms (load {:.1f}, ir {:.1f}, analysis {:.1f}, codegen {:.1f}, glslang {:.1f}, "
-                   "spirv-opt+val {:.1f}, reflect {:.1f})\n",
-                   t.total_ms(), t.load_ms, t.ir_ms, t.analysis_ms, t.codegen_ms, t.glslang_ms, t.optimize_ms,
+        fmt::print("  time:       {:.1f} ms wall; CPU time by stage: load {:.1f}, ir {:.1f}, analysis {:.1f}, codegen "
+                   "{:.1f}, glslang {:.1f}, spirv-opt+val {:.1f}, reflect {:.1f}\n",
+                   t.wall_ms, t.load_ms, t.ir_ms, t.analysis_ms, t.codegen_ms, t.glslang_ms, t.optimize_ms,
                    t.reflect_ms);
         for (const auto& n : result->lipschitz.notes) fmt::print("  note:       {}\n", n);
     }
@@ -171,6 +171,12 @@ std::string port_line(const PortDefinition& p, bool input) {
     return s + " - " + p.doc;
 }
 
+// Table cells cannot hold a bare '|'.
+std::string cell(std::string text) {
+    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.insert(at, "\\");
+    return text;
+}
+
 std::string markdown_node(const NodeDefinition& d) {
     std::string s = fmt::format("### `{}`\n\n{}\n\n{}\n\n", d.type, d.summary, d.doc);
     if (d.context == NodeContext::Shade) s += "*Shading only*: evaluated at the hit, never inside the march.\n\n";
@@ -188,11 +194,11 @@ std::string markdown_node(const NodeDefinition& d) {
                                                            p.max ? fmt::format("{:g}", *p.max) : "inf")
                                              : "";
         std::string about = p.doc + (p.knob.empty() ? "" : fmt::format(" (knob: {})", p.knob));
-        s += fmt::format("| in `{}` | {} | {} | {} | {} |\n", p.name, p.type.text(), def, range, about);
+        s += fmt::format("| in `{}` | {} | {} | {} | {} |\n", p.name, p.type.text(), def, range, cell(about));
     }
     for (const auto& p : d.outputs) {
         std::string about = p.doc + (p.effect ? fmt::format(" (adds effect `{}`)", effect_name(*p.effect)) : "");
-        s += fmt::format("| out `{}` | {} | | | {} |\n", p.name, p.type.text(), about);
+        s += fmt::format("| out `{}` | {} | | | {} |\n", p.name, p.type.text(), cell(about));
     }
     s += "\n";
     if (!d.lipschitz.empty()) {

@@ -25,7 +25,10 @@ DepthComparison compare_depths(std::span<const float> rendered, std::span<const 
             double radius = std::max(cone * r, 1e-12);
             double e = std::abs(static_cast<double>(t) - r) / radius;
             errors.push_back(e);
-            if (t - r > radius) ++c.overstepped;
+            if (t - r > radius) {
+                ++c.overstepped;
+                if (c.overstepped_pixels.size() < 8) c.overstepped_pixels.push_back(i);
+            }
         } else if (hit) {
             ++c.only_rendered;
         } else if (ref_hit) {

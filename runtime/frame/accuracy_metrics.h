@@ -4,6 +4,7 @@
 // and values that are not finite. Used by the tests and the accuracy benchmark.
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "stereo_rig.h"
 
@@ -16,6 +17,7 @@ struct DepthComparison {
     std::size_t overstepped = 0;        // rendered hit further than the reference by > 1 cone radius
     double misclassified = 0.0;         // (only_rendered + only_reference) / pixels
     double median_error = 0.0, p95_error = 0.0, max_error = 0.0;   // |t - t_ref| / (cone radius at t_ref)
+    std::vector<std::size_t> overstepped_pixels;                    // the first few, for messages
 };
 
 // `rendered` uses FG_MISS (< 0) for misses, as the depth images do; so does `reference`.

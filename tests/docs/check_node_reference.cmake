@@ -1,0 +1,10 @@
+# Fails when docs/nodes.md differs from what `fgc nodes --markdown` writes now.
+execute_process(COMMAND ${FGC} nodes --markdown OUTPUT_FILE ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fgc nodes --markdown failed")
+endif()
+file(READ ${OUT} generated)
+file(READ ${DOC} committed)
+if(NOT generated STREQUAL committed)
+  message(FATAL_ERROR "docs/nodes.md is out of date: run `build/compiler/fgc nodes --markdown > docs/nodes.md`")
+endif()
