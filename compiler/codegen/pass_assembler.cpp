@@ -1,6 +1,7 @@
 #include "pass_assembler.h"
 
 #include <fmt/format.h>
+#include <map>
 #include <sstream>
 
 #include "common/embedded_file.h"
@@ -36,6 +37,10 @@ PassTemplate parse_template(const EmbeddedFile& f) {
             std::string what;
             words >> what;
             t.needs_surface = what == "surface";
+        } else if (key == "include:") {
+            std::string file;
+            words >> file;
+            t.includes.push_back(file);
         } else if (key == "when:") {
             std::string what;
             words >> what;
@@ -63,14 +68,19 @@ const std::vector<PassTemplate>& pass_templates() {
     return all;
 }
 
-const std::string& common_template() {
-    static const std::string text = [] {
+const std::string& shared_template(const std::string& file) {
+    static const std::map<std::string, std::string> files = [] {
+        std::map<std::string, std::string> m;
         for (const auto& f : embedded_pass_templates())
-            if (f.path == "common.glsl") return std::string(f.text);
-        throw std::logic_error("runtime/frame/shaders/common.glsl is not embedded");
+            if (std::string_view(f.path).ends_with(".glsl")) m[std::string(f.path)] = std::string(f.text);
+        return m;
     }();
-    return text;
+    auto it = files.find(file);
+    if (it == files.end()) throw std::logic_error("runtime/frame/shaders/" + file + " is not embedded");
+    return it->second;
 }
+
+const std::string& common_template() { return shared_template("common.glsl"); }
 
 AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, const SceneCodegen& scene,
                             const std::vector<ManifestSpecConstant>& spec) {
@@ -103,6 +113,12 @@ AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, 
     common.line = 1;
     w.write(common_template(), common);
     w.blank();
+    for (const auto& file : pass.includes) {
+        SourceOrigin shared = common;
+        shared.file = "runtime/frame/shaders/" + file;
+        w.write(shared_template(file), shared);
+        w.blank();
+    }
     scene.declarations(w);
     scene.distance_function(w);
     if (pass.needs_surface) scene.surface_function(w);

@@ -5,6 +5,7 @@
 //   //! pass: post
 //   //! needs: distance | surface
 //   //! when: always | any-effect fog glow vignette foveation
+//   //! include: tail_queue.glsl      (optional, repeatable)
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,12 +24,14 @@ struct PassTemplate {
     std::string text;
     bool needs_surface = false;
     std::vector<Effect> when_any;      // empty: always
+    std::vector<std::string> includes; // shared template files pasted after common.glsl
     bool runs_with(const EffectSet& effects) const;
 };
 
 // All pass templates embedded in this build, parsed.
 const std::vector<PassTemplate>& pass_templates();
 const std::string& common_template();
+const std::string& shared_template(const std::string& file);   // throws if not embedded
 
 struct AssembledPass {
     std::string name;

@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 13> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 14> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -49,6 +49,8 @@ inline constexpr std::array<GlobalKnob, 13> kGlobalKnobs{{
      "sphere-tracing steps after reprojection before walking the centre levels again (fix-up march)"},
     {13, "reproject_trust_depth", "FG_REPROJECT_TRUST_DEPTH", ValueType::Bool, 0, 0, 1,
      "reprojection trusts the centre eye's full-resolution hit depth (the seeds' choice: closer, not conservative)"},
+    {14, "tail_after", "FG_TAIL_AFTER", ValueType::Int, 0, 0, 4096,
+     "full-resolution steps before a still-marching pixel moves to the compacted tail pass; 0 is off"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -30,13 +30,19 @@ void add_conemarch_passes(FrameGraph& g, int view) {
     bool glow = g.effects.has(Effect::Glow);
     if (glow) g.add_image({"glow." + name, w, h, ImageFormat::R32F, "closest approach along the ray"});
     std::int32_t slot = 0;
+    // The tail queue: big enough for every pixel when the tail pass runs, a stub otherwise (the
+    // program declares it either way).
+    std::string queue = "tail." + name;
+    bool tail = g.tail_after > 0 && g.manifest_has_tail;
+    g.add_buffer({queue, tail ? 16 + 16ull * w * h : 32, {0, 1, 1, 0},
+                  tail ? "pixels whose march continues in the tail pass" : "(tail pass off)"});
     for (std::uint32_t k = levels; k-- > 0;) {
         FramePass p;
         p.label = fmt::format("conemarch.{}.L{}", name, k);
         p.program = "conemarch";
         p.timer = "march";
         // Every level binds what the program declares; only level 0 writes the depth and glow.
-        p.bindings = {{"fg_levels", atlas}, {"fg_depth", depth}};
+        p.bindings = {{"fg_levels", atlas}, {"fg_depth", depth}, {"FgTail", queue}};
         if (glow) p.bindings.push_back({"fg_glow", "glow." + name});
         p.writes = {atlas};
         if (k + 1 < levels) p.reads = {atlas};
@@ -48,6 +54,22 @@ void add_conemarch_passes(FrameGraph& g, int view) {
         p.push = {view, static_cast<std::int32_t>(k), k + 1 == levels ? 1 : 0, slot};
         p.groups[0] = (level_size(w, k) + 7) / 8;
         p.groups[1] = (level_size(h, k) + 7) / 8;
+        if (k == 0 && tail) p.writes.push_back(queue);
+        g.add_pass(std::move(p));
+    }
+    if (tail) {
+        FramePass p;
+        p.label = "tail." + name;
+        p.program = "tail";
+        p.timer = "march";
+        p.bindings = {{"fg_levels", atlas}, {"fg_depth", depth}, {"FgTail", queue}};
+        if (glow) p.bindings.push_back({"fg_glow", "glow." + name});
+        p.reads = {queue, atlas};
+        p.writes = {atlas, depth};
+        if (glow) p.writes.push_back("glow." + name);
+        p.counter_slot = g.counter_slot("tail");
+        p.push = {view, p.counter_slot};
+        p.indirect = queue;
         g.add_pass(std::move(p));
     }
 }

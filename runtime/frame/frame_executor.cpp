@@ -113,6 +113,9 @@ void FrameExecutor::make_programs(const Pack& pack) {
 void FrameExecutor::make_resources() {
     for (const auto& img : graph_.images())
         images_[img.name] = std::make_unique<vk::StorageImage>(ctx_, vk_format(img.format), VkExtent2D{img.width, img.height});
+    for (const auto& b : graph_.buffers())
+        buffers_[b.name] = std::make_unique<vk::Buffer>(
+            ctx_, b.size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     frame_ = std::make_unique<vk::Buffer>(ctx_, sizeof(GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
     scene_ = std::make_unique<vk::Buffer>(ctx_, sizeof(GpuScene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
     params_bytes_.assign(std::max<std::size_t>(16, manifest_.params_size), std::byte{0});
@@ -152,6 +155,8 @@ void FrameExecutor::make_descriptor_sets() {
             else if (resource == "scene") vk::write_uniform_buffer(ctx_, set, b.binding, *scene_);
             else if (resource == "params") vk::write_uniform_buffer(ctx_, set, b.binding, *params_);
             else if (resource == "counters") vk::write_storage_buffer(ctx_, set, b.binding, *counters_);
+            else if (auto buf = buffers_.find(resource); buf != buffers_.end())
+                vk::write_storage_buffer(ctx_, set, b.binding, *buf->second);
             else {
                 auto img = images_.find(resource);
                 if (img == images_.end())
@@ -207,17 +212,27 @@ FrameStats FrameExecutor::run() {
             img->transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::none, vk::access::compute_read_write);
         images_initialised_ = true;
     }
+    for (const auto& b : graph_.buffers())
+        if (!b.reset.empty())
+            vkCmdUpdateBuffer(cmd, buffers_.at(b.name)->handle(), 0, b.reset.size() * 4, b.reset.data());
+    vk::transfer_to_compute_barrier(cmd);
     if (timer) timer->begin(cmd, "frame");
     for (std::size_t i = 0; i < graph_.passes().size(); ++i) {
         const auto& pass = graph_.passes()[i];
         const Program& prog = programs_.at(pass.program);
         if (timer) timer->begin(cmd, pass.timer);
         std::vector<std::byte> push(prog.manifest->push_constant_size, std::byte{0});
-        std::memcpy(push.data(), pass.push.data(), std::min(push.size(), pass.push.size() * 4));
-        prog.pipeline->dispatch(cmd, sets_[i], {pass.groups[0], pass.groups[1], pass.groups[2]}, push);
+        if (!push.empty()) std::memcpy(push.data(), pass.push.data(), std::min(push.size(), pass.push.size() * 4));
+        if (pass.indirect.empty())
+            prog.pipeline->dispatch(cmd, sets_[i], {pass.groups[0], pass.groups[1], pass.groups[2]}, push);
+        else
+            prog.pipeline->dispatch_indirect(cmd, sets_[i], buffers_.at(pass.indirect)->handle(), 0, push);
         if (timer) timer->end(cmd, pass.timer);
-        // Every pass may read what the one before wrote.
-        vk::compute_to_compute_barrier(cmd);
+        // Every pass may read what the one before wrote, also as indirect dispatch sizes.
+        vk::memory_barrier(cmd, vk::access::compute_write,
+                           {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
     }
     if (timer) timer->end(cmd, "frame");
     vk::compute_to_host_barrier(cmd);

@@ -56,6 +56,7 @@ private:
     FrameGraph graph_;
     std::map<std::string, Program> programs_;
     std::map<std::string, std::unique_ptr<vk::StorageImage>> images_;
+    std::map<std::string, std::unique_ptr<vk::Buffer>> buffers_;
     std::unique_ptr<vk::Buffer> frame_, scene_, params_, counters_;
     std::unique_ptr<vk::DescriptorPool> pool_;
     std::vector<VkDescriptorSet> sets_;                 // one per pass

@@ -46,6 +46,12 @@ void FrameGraph::add_image(FrameImage image) {
     if (!find_image(image.name)) images_.push_back(std::move(image));
 }
 
+void FrameGraph::add_buffer(FrameBuffer buffer) {
+    for (const auto& b : buffers_)
+        if (b.name == buffer.name) return;
+    buffers_.push_back(std::move(buffer));
+}
+
 void FrameGraph::add_pass(FramePass pass) { passes_.push_back(std::move(pass)); }
 
 std::int32_t FrameGraph::counter_slot(const std::string& group) {
@@ -65,6 +71,11 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.settings = settings;
     g.effects = manifest.effects;
     g.has_post = manifest.find_pass("post") != nullptr;
+    g.manifest_has_tail = manifest.find_pass("tail") != nullptr;
+    if (const auto* tail = manifest.find_spec("tail_after")) {
+        auto it = settings.knobs.find("tail_after");
+        g.tail_after = static_cast<std::uint32_t>(it != settings.knobs.end() ? it->second : tail->value);
+    }
     auto require = [&](const char* program) {
         if (!manifest.find_pass(program))
             throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", program));
@@ -98,7 +109,7 @@ std::string FrameGraph::describe() const {
     auto names = effects.names();
     s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
     std::size_t bytes = 0;
-    s += fmt::format("images ({}):\n", images_.size());
+    s += fmt::format("images and buffers ({}):\n", images_.size() + buffers_.size());
     for (const auto& i : images_) {
         std::size_t px = static_cast<std::size_t>(i.width) * i.height;
         std::size_t bpp = i.format == ImageFormat::R32F ? 4 : i.format == ImageFormat::RGBA8 ? 4 : 8;
@@ -106,11 +117,17 @@ std::string FrameGraph::describe() const {
         bytes += px * bpp;
         s += fmt::format("  {:<16} {:>5}x{:<5} {:<8} {}\n", i.name, i.width, i.height, image_format_name(i.format), i.about);
     }
+    for (const auto& b : buffers_) {
+        bytes += b.size;
+        s += fmt::format("  {:<16} {:>11} B        {}\n", b.name, b.size, b.about);
+    }
     s += fmt::format("  ({:.1f} MiB)\n", static_cast<double>(bytes) / (1024.0 * 1024.0));
     s += fmt::format("passes ({}):\n", passes_.size());
     for (const auto& p : passes_) {
-        s += fmt::format("  {:<20} {:<10} {:>4}x{:<4} reads [{}] writes [{}]\n", p.label, p.program, p.groups[0],
-                         p.groups[1], fmt::join(p.reads, ", "), fmt::join(p.writes, ", "));
+        std::string groups = p.indirect.empty() ? fmt::format("{:>4}x{:<4}", p.groups[0], p.groups[1])
+                                                : fmt::format("{:<9}", "indirect");
+        s += fmt::format("  {:<20} {:<10} {} reads [{}] writes [{}]\n", p.label, p.program, groups,
+                         fmt::join(p.reads, ", "), fmt::join(p.writes, ", "));
     }
     return s;
 }

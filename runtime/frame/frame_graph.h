@@ -22,6 +22,15 @@ struct FrameImage {
     std::string about;
 };
 
+// A storage buffer the graph owns, e.g. a tail queue; `reset` words are written at the start of
+// every frame.
+struct FrameBuffer {
+    std::string name;
+    std::uint64_t size = 0;
+    std::vector<std::uint32_t> reset;
+    std::string about;
+};
+
 struct FramePass {
     std::string label;                 // unique: "conemarch.left.L2"
     std::string program;               // the pack pass it runs: "conemarch"
@@ -31,6 +40,7 @@ struct FramePass {
     std::vector<std::int32_t> push;                               // push-constant words
     std::uint32_t groups[3] = {1, 1, 1};
     std::int32_t counter_slot = -1;    // evaluation counter slot, -1 if the pass evaluates nothing
+    std::string indirect;              // buffer whose first three words are the group counts
 };
 
 class FrameGraph {
@@ -39,6 +49,7 @@ public:
                             std::uint32_t centre_height);
 
     const std::vector<FrameImage>& images() const { return images_; }
+    const std::vector<FrameBuffer>& buffers() const { return buffers_; }
     const std::vector<FramePass>& passes() const { return passes_; }
     // Counter slots: one per pass program that marches ("conemarch", "reproject", "naive", "shade").
     const std::vector<std::string>& counter_groups() const { return counter_groups_; }
@@ -47,6 +58,7 @@ public:
 
     // Used by the pass builders (conemarch_pass.cpp ...).
     void add_image(FrameImage image);
+    void add_buffer(FrameBuffer buffer);
     void add_pass(FramePass pass);
     std::int32_t counter_slot(const std::string& group);
 
@@ -54,9 +66,12 @@ public:
     FrameSettings settings;
     EffectSet effects;
     bool has_post = false;             // the pack has a post pass: shade writes HDR for it
+    std::uint32_t tail_after = 0;      // the tail_after knob: > 0 adds compacted tail passes
+    bool manifest_has_tail = false;    // the pack has the tail program
 
 private:
     std::vector<FrameImage> images_;
+    std::vector<FrameBuffer> buffers_;
     std::vector<FramePass> passes_;
     std::vector<std::string> counter_groups_;
 };

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "bench_runner.h"
 #include "fgplay_render.h"
 
 int main(int argc, char** argv) {
@@ -30,7 +31,28 @@ int main(int argc, char** argv) {
     render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
     render->add_option("--device", r.device, "Vulkan device: index or name substring");
 
+    fg::bench::BenchOptions b;
+    auto* bench = app.add_subcommand("bench", "accuracy versus time: sweep the knobs, compare with a reference");
+    bench->add_option("pack", b.pack, "shader pack (or --graph)");
+    bench->add_option("--graph", b.graph, "compile this graph first (and report its compile time)");
+    bench->add_option("--out", b.out, "output folder")->capture_default_str();
+    bench->add_flag("--quick", b.quick, "a couple of minutes on two cores: 128x128, two views, a few settings");
+    bench->add_option("--size", b.size, "per-eye size (default 512, quick 128)");
+    bench->add_option("--frames", b.frames, "timed frames per setting (default 5, quick 2)");
+    bench->add_option("--view", b.views, "afar, filled, grazing, deep_zoom (repeatable; default all)");
+    bench->add_option("--device", b.device, "Vulkan device: index or name substring");
+    bool no_plots = false;
+    bench->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+
     CLI11_PARSE(app, argc, argv);
+    if (*bench) {
+        if (b.pack.empty() == b.graph.empty()) {
+            fmt::print(stderr, "fgplay bench: give a pack or --graph, not both\n");
+            return 2;
+        }
+        b.plots = !no_plots;
+        return fg::bench::run_bench(b);
+    }
     if (*render) {
         unsigned w = 0, h = 0;
         if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384) {

@@ -191,4 +191,11 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::span<const VkDescriptor
     vkCmdDispatch(cmd, groups.x, groups.y, groups.z);
 }
 
+void ComputePipeline::dispatch_indirect(VkCommandBuffer cmd, VkDescriptorSet set, VkBuffer args, VkDeviceSize offset,
+                                        std::span<const std::byte> push) const {
+    bind(cmd, std::span<const VkDescriptorSet>(&set, 1));
+    push_constants(cmd, push);
+    vkCmdDispatchIndirect(cmd, args, offset);
+}
+
 }  // namespace fg::vk

@@ -85,6 +85,11 @@ public:
         dispatch(cmd, std::span<const VkDescriptorSet>(&set, 1), groups, push);
     }
 
+    // bind + push_constants + vkCmdDispatchIndirect: the group counts come from `args` at
+    // `offset` (three uint32), written by an earlier dispatch.
+    void dispatch_indirect(VkCommandBuffer cmd, VkDescriptorSet set, VkBuffer args, VkDeviceSize offset,
+                           std::span<const std::byte> push = {}) const;
+
 private:
     void destroy() noexcept;
 

@@ -1,6 +1,7 @@
 //! pass: conemarch
 //! needs: distance
 //! when: always
+//! include: tail_queue.glsl
 // Progressive cone marching (Fulcrum's Fractus, Framestore's VR fractals), one dispatch per level
 // from coarse to fine. A level-k pixel marches a cone that covers its 2^k x 2^k footprint, starting
 // where its parent stopped, and stops as soon as the cone may touch a surface: its distance is a
@@ -24,6 +25,10 @@ layout(push_constant) uniform FgConePush {
     int top;             // 1 for the coarsest level: no parent
     int counter_slot;
 } pc;
+
+// Full resolution with FG_TAIL_AFTER > 0: a pixel still marching after that many steps goes to
+// the tail queue (tail.comp finishes it).
+bool fg_defer(int step) { return FG_TAIL_AFTER > 0 && step == FG_TAIL_AFTER; }
 
 // A bound beyond every ray's exit: children of an escaped cone miss at once.
 float fg_escaped() { return fg_scene.misc.y * 2.0 + 1.0; }
@@ -74,6 +79,7 @@ void main()
         float bound = fg_escaped();   // where the pixel's cone first touched
         float result = FG_MISS;
         float closest = 1e30;
+        bool deferred = false;
         if (range.x <= range.y && t <= range.y) {
             bool hit = false;
             int i = 0;
@@ -81,6 +87,13 @@ void main()
             float step = 0.0;
             float omega = FG_OVERRELAX;
             for (; i < FG_FINE_STEPS; ++i) {
+                if (fg_defer(i)) {
+                    deferred = true;
+                    // Every step so far kept the cone safe if the bound is still open.
+                    bound = min(bound, t);
+                    fg_tail_append(pixel, t, closest, uint(i));
+                    break;
+                }
                 float d = fg_scene_distance(ro + rd * t) * FG_STEP_SCALE;
                 evaluations++;
                 // Over-relaxation (Keinert et al.): if the spheres stop overlapping, step back.
@@ -93,7 +106,7 @@ void main()
                 }
                 closest = min(closest, d);
                 float radius = cone * t;
-                if (bound > range.y && d <= FG_CONE_STOP * radius) bound = t;
+                if (bound > range.y && (pc.view != 2 || d <= FG_CONE_STOP * radius)) bound = t;
                 if (d < FG_EPSILON * radius) {
                     hit = true;
                     break;
@@ -109,10 +122,12 @@ void main()
             if (result != FG_MISS) bound = min(bound, result);
         }
         imageStore(fg_levels, pixel, vec4(result, bound, 0.0, 0.0));
-        imageStore(fg_depth, pixel, vec4(result));
+        if (!deferred) {
+            imageStore(fg_depth, pixel, vec4(result));
 #ifdef FG_HAS_GLOW
-        imageStore(fg_glow, pixel, vec4(closest));
+            imageStore(fg_glow, pixel, vec4(closest));
 #endif
+        }
     }
     if (FG_COUNT_EVALUATIONS) atomicAdd(fg_counters.evaluations[pc.counter_slot], evaluations);
 }

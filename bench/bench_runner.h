@@ -1,0 +1,25 @@
+#pragma once
+// `fgplay bench`: for each view, renders a reference and then every setting of the sweep, in one
+// run with the same warm-up: GPU time per pass (median of several frames), SDF evaluations per
+// output pixel, and the error against the reference. Writes results.csv, results.md, results.json
+// and the plots.
+#include <string>
+#include <vector>
+
+namespace fg::bench {
+
+struct BenchOptions {
+    std::string pack;             // a compiled pack, or empty with `graph`
+    std::string graph;            // a graph to compile first
+    std::string out = "bench-results";
+    bool quick = false;
+    std::uint32_t size = 0;       // per-eye size; 0: 512 (quick: 128)
+    int frames = 0;               // timed frames per setting; 0: 5 (quick: 2)
+    std::vector<std::string> views;   // subset of afar, filled, grazing, deep_zoom; empty: all (quick: afar, filled)
+    std::string device;
+    bool plots = true;
+};
+
+int run_bench(const BenchOptions& options);
+
+}  // namespace fg::bench

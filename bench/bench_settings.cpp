@@ -1,0 +1,99 @@
+#include "bench_settings.h"
+
+#include <fmt/format.h>
+
+namespace fg::bench {
+
+namespace {
+
+std::string number(double v) { return fmt::format("{:g}", v); }
+
+}  // namespace
+
+std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& o) {
+    FrameSettings def;
+    def.width = def.height = o.size;
+    def.stereo = StereoMode::PerEye;
+    def.cone_levels = 5;
+    std::vector<BenchSetting> out;
+    auto add = [&](std::string group, std::string name, FrameSettings f) {
+        out.push_back({std::move(name), std::move(group), std::move(f), false});
+    };
+
+    FrameSettings naive = def;
+    naive.stereo = StereoMode::Naive;
+    out.push_back({"naive per-eye sphere tracing", "baseline", naive, true});
+    add("default", "per-eye conemarch (default)", def);
+
+    auto knob = [&](const std::string& k, std::vector<double> values) {
+        for (double v : values) {
+            FrameSettings f = def;
+            f.knobs[k] = v;
+            add(k, fmt::format("{}={}", k, number(v)), f);
+        }
+    };
+    auto mode = [&](const std::string& name, StereoMode s, std::map<std::string, double> knobs = {}) {
+        FrameSettings f = def;
+        f.stereo = s;
+        f.knobs = std::move(knobs);
+        add("stereo", name, f);
+    };
+
+    if (o.quick) {
+        knob("epsilon", {1.0});
+        knob("fine_steps", {16});
+        knob("overrelax", {1.4});
+        mode("reproject", StereoMode::Reproject);
+        mode("reproject, trusting depth", StereoMode::Reproject, {{"reproject_trust_depth", 1}});
+        return out;
+    }
+
+    knob("epsilon", {0.25, 1.0, 2.0});
+    knob("fine_steps", {16, 32, 128});
+    knob("max_steps", {64});
+    for (const auto& f : m.fractals) {
+        if (const auto* it = m.find_spec(f.iterations_spec)) {
+            double base = it->value;
+            knob(it->name, {std::max(1.0, base - 2), base + 2, base + 4});
+        }
+        if (const auto* b = m.find_spec(f.bias_spec)) knob(b->name, {0.0, 1.05, 1.2});
+    }
+    knob("step_scale", {0.8, 1.2});
+    for (std::uint32_t levels : {1u, 3u, 7u}) {
+        FrameSettings f = def;
+        f.cone_levels = levels;
+        add("cone_levels", fmt::format("cone_levels={}", levels), f);
+    }
+    knob("cone_steps", {16});
+    knob("cone_stop", {1.1, 3.0});
+    knob("overrelax", {1.2, 1.5});
+    knob("tail_after", {8, 16});
+    knob("normal_taps", {6});
+    mode("reproject", StereoMode::Reproject);
+    mode("reproject, trusting depth", StereoMode::Reproject, {{"reproject_trust_depth", 1}});
+    mode("reproject, 8 fix-up steps", StereoMode::Reproject, {{"reproject_fixup_steps", 8}});
+    for (std::uint32_t size : {o.size / 2}) {
+        FrameSettings f = def;
+        f.width = f.height = size;
+        add("resolution", fmt::format("{}x{} per eye", size, size), f);
+    }
+
+    // Jointly: the knobs that matter most, on a grid.
+    for (double eps : {0.5, 1.0})
+        for (double steps : {32.0, 64.0})
+            for (double omega : {1.0, 1.3})
+                for (int trust : {0, 1}) {
+                    FrameSettings f = def;
+                    f.knobs = {{"epsilon", eps}, {"fine_steps", steps}, {"overrelax", omega}};
+                    if (trust) {
+                        f.stereo = StereoMode::Reproject;
+                        f.knobs["reproject_trust_depth"] = 1;
+                    }
+                    add("grid", fmt::format("{} eps={} fine={} omega={}", trust ? "reproject-trust" : "per-eye",
+                                            number(eps), number(steps), number(omega)),
+                        f);
+                }
+    return out;
+}
+
+}  // namespace fg::bench
