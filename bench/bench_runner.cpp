@@ -17,6 +17,7 @@
 #include "frame/accuracy_metrics.h"
 #include "frame/cpu_reference_tracer.h"
 #include "frame/headless_renderer.h"
+#include "frame/lens_mask.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
 
@@ -30,11 +31,12 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-double psnr(const Rgba8Image& a, const Rgba8Image& b) {
+// Over the visible pixels only, when `visible` (lens_mask.h) is given.
+double psnr(const Rgba8Image& a, const Rgba8Image& b, std::span<const std::uint8_t> visible) {
     double se = 0.0;
     std::size_t n = 0;
     for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-        if (i % 4 == 3) continue;
+        if (i % 4 == 3 || (i / 4 < visible.size() && !visible[i / 4])) continue;
         double d = static_cast<double>(a.pixels[i]) - b.pixels[i];
         se += d * d;
         ++n;
@@ -62,6 +64,7 @@ FrameSettings reference_settings(std::uint32_t size) {
     FrameSettings f;
     f.width = f.height = size;
     f.stereo = StereoMode::Naive;
+    f.foveation = 0.0;
     f.knobs = {{"epsilon", 0.05}, {"max_steps", 2000}};
     return f;
 }
@@ -208,14 +211,20 @@ int run_bench(const BenchOptions& o) {
                 const Reference& same = reference_for(s.frame.width);
                 double half_diag = same.views.pixel_half_diagonal;
                 auto as_double = [](const std::vector<float>& v) { return std::vector<double>(v.begin(), v.end()); };
-                auto cmp_l = compare_depths(frame.depth_left, as_double(same.frame.depth_left), half_diag);
-                auto cmp_r = compare_depths(frame.depth_right, as_double(same.frame.depth_right), half_diag);
+                // With the lens mask, error counts only what a viewer sees through the lens.
+                std::vector<std::uint8_t> seen_l, seen_r;
+                if (s.frame.lens_mask) {
+                    seen_l = visible_pixels(lens_ellipse(same.views.left), same.views.left.width, same.views.left.height);
+                    seen_r = visible_pixels(lens_ellipse(same.views.right), same.views.right.width, same.views.right.height);
+                }
+                auto cmp_l = compare_depths(frame.depth_left, as_double(same.frame.depth_left), half_diag, seen_l);
+                auto cmp_r = compare_depths(frame.depth_right, as_double(same.frame.depth_right), half_diag, seen_r);
                 row.misclassified_pct = 50.0 * (cmp_l.misclassified + cmp_r.misclassified);
                 row.depth_median = 0.5 * (cmp_l.median_error + cmp_r.median_error);
                 row.depth_p95 = std::max(cmp_l.p95_error, cmp_r.p95_error);
                 row.not_finite = cmp_l.not_finite + cmp_r.not_finite;
                 row.overstepped = cmp_l.overstepped + cmp_r.overstepped;
-                row.psnr = 0.5 * (psnr(frame.left, same.frame.left) + psnr(frame.right, same.frame.right));
+                row.psnr = 0.5 * (psnr(frame.left, same.frame.left, seen_l) + psnr(frame.right, same.frame.right, seen_r));
                 if (view.name == "filled" || views.size() == 1)
                     write_png((std::filesystem::path(o.out) / fmt::format("{}_{}.png", view.name, file_safe(s.name))).string(),
                               frame.left);

@@ -15,6 +15,7 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     def.width = def.height = o.size;
     def.stereo = StereoMode::PerEye;
     def.cone_levels = 5;
+    def.foveation = 0.0;
     std::vector<BenchSetting> out;
     auto add = [&](std::string group, std::string name, FrameSettings f) {
         out.push_back({std::move(name), std::move(group), std::move(f), false});
@@ -39,7 +40,21 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
         add("stereo", name, f);
     };
 
+    // Fewer pixels: the lens mask, fixed foveation, and both.
+    auto pixels = [&](bool lens, double fovea, std::map<std::string, double> knobs = {}) {
+        FrameSettings f = def;
+        f.lens_mask = lens;
+        f.foveation = fovea;
+        f.knobs = std::move(knobs);
+        std::string name = lens ? "lens mask" : "";
+        if (fovea > 0.0) name += fmt::format("{}foveation {}", lens ? " + " : "", number(fovea));
+        for (const auto& [k, v] : f.knobs) name += fmt::format(" {}={}", k, number(v));
+        add("pixels", name, f);
+    };
+
     if (o.quick) {
+        pixels(true, 0.0);
+        pixels(false, 0.5);
         knob("epsilon", {1.0});
         knob("fine_steps", {16});
         knob("overrelax", {1.4});
@@ -69,6 +84,10 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     knob("overrelax", {1.2, 1.5});
     knob("tail_after", {8, 16});
     knob("normal_taps", {6});
+    pixels(true, 0.0);
+    for (double fovea : {0.35, 0.5, 0.7}) pixels(false, fovea);
+    pixels(true, 0.5);
+    pixels(true, 0.5, {{"epsilon", 1.0}, {"overrelax", 1.3}});
     mode("reproject", StereoMode::Reproject);
     mode("reproject, trusting depth", StereoMode::Reproject, {{"reproject_trust_depth", 1}});
     mode("reproject, 8 fix-up steps", StereoMode::Reproject, {{"reproject_fixup_steps", 8}});

@@ -7,12 +7,14 @@
 namespace fg {
 
 DepthComparison compare_depths(std::span<const float> rendered, std::span<const double> reference,
-                               double pixel_half_diagonal) {
+                               double pixel_half_diagonal, std::span<const std::uint8_t> visible) {
     DepthComparison c;
-    c.pixels = std::min(rendered.size(), reference.size());
+    std::size_t n = std::min(rendered.size(), reference.size());
     std::vector<double> errors;
     double cone = std::tan(pixel_half_diagonal);
-    for (std::size_t i = 0; i < c.pixels; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i < visible.size() && !visible[i]) continue;
+        ++c.pixels;
         float t = rendered[i];
         double r = reference[i];
         if (!std::isfinite(t)) {

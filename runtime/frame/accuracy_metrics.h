@@ -3,6 +3,7 @@
 // in units of the pixel's cone radius at the hit, overstepping (a hit beyond the true surface),
 // and values that are not finite. Used by the tests and the accuracy benchmark.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -20,8 +21,9 @@ struct DepthComparison {
     std::vector<std::size_t> overstepped_pixels;                    // the first few, for messages
 };
 
-// `rendered` uses FG_MISS (< 0) for misses, as the depth images do; so does `reference`.
+// `rendered` uses FG_MISS (< 0) for misses, as the depth images do; so does `reference`. With
+// `visible` (1 per visible pixel, lens_mask.h), only the pixels a viewer sees are compared.
 DepthComparison compare_depths(std::span<const float> rendered, std::span<const double> reference,
-                               double pixel_half_diagonal);
+                               double pixel_half_diagonal, std::span<const std::uint8_t> visible = {});
 
 }  // namespace fg

@@ -55,7 +55,12 @@ void add_conemarch_passes(FrameGraph& g, int view) {
         p.groups[0] = (level_size(w, k) + 7) / 8;
         p.groups[1] = (level_size(h, k) + 7) / 8;
         if (k == 0 && tail) p.writes.push_back(queue);
-        g.add_pass(std::move(p));
+        if (k == 0) {
+            g.add_pixel_pass(std::move(p), view);
+        } else {
+            p.push.push_back(1);
+            g.add_pass(std::move(p));
+        }
     }
     if (tail) {
         FramePass p;

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <stdexcept>
 
+#include "graph/scene_settings.h"
+
 namespace fg {
 
 const char* stereo_mode_name(StereoMode m) {
@@ -54,6 +56,23 @@ void FrameGraph::add_buffer(FrameBuffer buffer) {
 
 void FrameGraph::add_pass(FramePass pass) { passes_.push_back(std::move(pass)); }
 
+void FrameGraph::add_pixel_pass(FramePass pass, int view) {
+    bool foveated = settings.foveation > 0.0 && view != kCentreView;
+    if (foveated) {
+        FramePass periphery = pass;
+        periphery.label += ".periphery";
+        periphery.push.push_back(2);
+        periphery.groups[0] = (pass.groups[0] + 1) / 2;
+        periphery.groups[1] = (pass.groups[1] + 1) / 2;
+        pass.push.push_back(1);
+        add_pass(std::move(pass));
+        add_pass(std::move(periphery));
+        return;
+    }
+    pass.push.push_back(1);
+    add_pass(std::move(pass));
+}
+
 std::int32_t FrameGraph::counter_slot(const std::string& group) {
     auto it = std::find(counter_groups_.begin(), counter_groups_.end(), group);
     if (it != counter_groups_.end()) return static_cast<std::int32_t>(it - counter_groups_.begin());
@@ -69,6 +88,13 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.centre_width = centre_width;
     g.centre_height = centre_height;
     g.settings = settings;
+    if (g.settings.foveation < 0.0) {
+        // As the scene says: its foveation block, or none.
+        Diagnostics ignore;
+        auto scene = parse_scene_settings(&manifest.scene, "/scene", ignore);
+        g.settings.foveation = scene.foveation ? scene.foveation->inner_radius : 0.0;
+        if (scene.foveation) g.settings.foveation_blend = scene.foveation->blend;
+    }
     g.effects = manifest.effects;
     g.has_post = manifest.find_pass("post") != nullptr;
     g.manifest_has_tail = manifest.find_pass("tail") != nullptr;
@@ -100,12 +126,20 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     for (int eye : {kLeftView, kRightView}) add_shade_pass(g, eye);
     if (g.has_post)
         for (int eye : {kLeftView, kRightView}) add_post_pass(g, eye);
+    if (g.settings.foveation > 0.0) {
+        require("fovea");
+        for (int eye : {kLeftView, kRightView}) add_fovea_pass(g, eye);
+    }
     return g;
 }
 
 std::string FrameGraph::describe() const {
     std::string s = fmt::format("frame graph: {} stereo, {}x{} per eye, {} cone levels\n", stereo_mode_name(settings.stereo),
                                 width, height, settings.cone_levels);
+    s += fmt::format("pixels: lens mask {}, foveation {}\n", settings.lens_mask ? "on" : "off",
+                     settings.foveation > 0.0 ? fmt::format("fovea radius {:g}, blend {:g}", settings.foveation,
+                                                            settings.foveation_blend)
+                                              : std::string("off"));
     auto names = effects.names();
     s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
     std::size_t bytes = 0;

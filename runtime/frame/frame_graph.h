@@ -60,6 +60,9 @@ public:
     void add_image(FrameImage image);
     void add_buffer(FrameBuffer buffer);
     void add_pass(FramePass pass);
+    // A full-resolution pass of an eye, whose last push word is the pixel stride: with foveation
+    // it runs as two dispatches, all pixels short of the periphery and every other pixel beyond.
+    void add_pixel_pass(FramePass pass, int view);
     std::int32_t counter_slot(const std::string& group);
 
     std::uint32_t width = 0, height = 0, centre_width = 0, centre_height = 0;
@@ -86,5 +89,6 @@ void add_conemarch_passes(FrameGraph& g, int view);
 void add_reproject_pass(FrameGraph& g, int view);
 void add_shade_pass(FrameGraph& g, int view);
 void add_post_pass(FrameGraph& g, int view);
+void add_fovea_pass(FrameGraph& g, int view);
 
 }  // namespace fg

@@ -21,6 +21,12 @@ struct FrameSettings {
     StereoMode stereo = StereoMode::PerEye;
     std::uint32_t cone_levels = 5;              // conemarch levels including full resolution
     bool count_evaluations = false;             // SDF evaluations per pass (a specialization constant)
+    // Fewer pixels: the lens mask skips what the headset's lens hides; fixed foveation marches and
+    // shades one pixel in four beyond the fovea. Foveation < 0 takes the scene's foveation block
+    // (off without one), 0 is off, > 0 is the fovea radius in half image heights.
+    bool lens_mask = false;
+    double foveation = -1.0;
+    double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
 };
 

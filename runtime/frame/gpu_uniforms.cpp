@@ -1,6 +1,9 @@
 #include "gpu_uniforms.h"
 
+#include <algorithm>
+
 #include "graph/scene_settings.h"
+#include "lens_mask.h"
 
 namespace fg {
 
@@ -8,21 +11,30 @@ namespace {
 std::array<float, 4> v4(const glm::dvec3& v, double w = 0.0) {
     return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(w)};
 }
-GpuView gpu_view(const View& v) {
-    return {v4(v.origin), v4(v.right), v4(v.up), v4(v.forward),
-            {static_cast<float>(v.fov.left), static_cast<float>(v.fov.right), static_cast<float>(v.fov.down),
-             static_cast<float>(v.fov.up)}};
+GpuView gpu_view(const View& v, bool lens_mask) {
+    GpuView g{v4(v.origin), v4(v.right), v4(v.up), v4(v.forward),
+              {static_cast<float>(v.fov.left), static_cast<float>(v.fov.right), static_cast<float>(v.fov.down),
+               static_cast<float>(v.fov.up)},
+              {0.5f, 0.5f, 0.0f, 0.0f}};
+    if (lens_mask) {
+        LensEllipse e = lens_ellipse(v);
+        g.lens = {static_cast<float>(e.centre_u), static_cast<float>(e.centre_v), static_cast<float>(e.radius_u),
+                  static_cast<float>(e.radius_v)};
+    }
+    return g;
 }
 }  // namespace
 
-GpuFrame make_gpu_frame(const StereoViews& views, std::uint32_t cone_levels, double time, double world_scale,
+GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings, double time, double world_scale,
                         std::uint32_t frame_index) {
     GpuFrame f{};
-    f.views[0] = gpu_view(views.left);
-    f.views[1] = gpu_view(views.right);
-    f.views[2] = gpu_view(views.centre);
+    f.views[0] = gpu_view(views.left, settings.lens_mask);
+    f.views[1] = gpu_view(views.right, settings.lens_mask);
+    f.views[2] = gpu_view(views.centre, false);   // the centre eye serves both lenses
     f.size = {views.left.width, views.left.height, views.centre.width, views.centre.height};
-    f.info = {frame_index, cone_levels, 0, 0};
+    f.info = {frame_index, settings.cone_levels, 0, 0};
+    f.foveation = {static_cast<float>(std::max(settings.foveation, 0.0)), static_cast<float>(settings.foveation_blend),
+                   0.0f, 0.0f};
     f.time = {static_cast<float>(time), static_cast<float>(world_scale), static_cast<float>(views.ipd), 0.0f};
     f.pixel = {static_cast<float>(views.pixel_half_diagonal), static_cast<float>(views.pixel_tan), 0.0f, 0.0f};
     return f;

@@ -6,12 +6,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frame_settings.h"
 #include "stereo_rig.h"
 
 namespace fg {
 
 struct GpuView {
     std::array<float, 4> origin, right, up, forward, tan_fov;
+    std::array<float, 4> lens;         // lens mask ellipse: centre uv, radii uv (0: off)
 };
 
 struct GpuFrame {
@@ -20,8 +22,9 @@ struct GpuFrame {
     std::array<std::uint32_t, 4> info; // frame index, cone levels
     std::array<float, 4> time;         // seconds, world scale, ipd
     std::array<float, 4> pixel;        // half-diagonal tangent, tangent per pixel
+    std::array<float, 4> foveation;    // fovea radius (0: off), blend band
 };
-static_assert(sizeof(GpuFrame) == 3 * 80 + 4 * 16);
+static_assert(sizeof(GpuFrame) == 3 * 96 + 5 * 16);
 
 struct GpuScene {
     std::array<float, 4> light_dir, light_color, ambient, sss_color, rim_color, albedo, bg_top, bg_bottom, fog, glow,
@@ -29,7 +32,8 @@ struct GpuScene {
 };
 static_assert(sizeof(GpuScene) == 13 * 16);
 
-GpuFrame make_gpu_frame(const StereoViews& views, std::uint32_t cone_levels, double time, double world_scale,
+// `settings` as the frame graph resolved them (lens mask, foveation).
+GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings, double time, double world_scale,
                         std::uint32_t frame_index);
 // From the manifest's scene settings (graph/scene_settings.h).
 GpuScene make_gpu_scene(const nlohmann::json& scene);

@@ -39,7 +39,7 @@ Fov HeadlessRenderer::scene_fov() const {
 
 RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
     views_ = make_stereo_views(head, scene_fov(), scene_fov(), stereo_);
-    executor_->set_frame(make_gpu_frame(views_, frame_.cone_levels, time, stereo_.world_scale, frame_index));
+    executor_->set_frame(make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index));
     RenderedFrame out;
     out.stats = executor_->run();
     out.left = rgba8_from_bytes(executor_->download("final.left"), frame_.width, frame_.height);

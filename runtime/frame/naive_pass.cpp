@@ -21,7 +21,7 @@ void add_naive_passes(FrameGraph& g, int view) {
     p.push = {view, p.counter_slot};
     p.groups[0] = (g.width + 7) / 8;
     p.groups[1] = (g.height + 7) / 8;
-    g.add_pass(std::move(p));
+    g.add_pixel_pass(std::move(p), view);
 }
 
 }  // namespace fg

@@ -26,7 +26,7 @@ void add_reproject_pass(FrameGraph& g, int view) {
     p.push = {view, p.counter_slot, static_cast<std::int32_t>(std::max(1u, g.settings.cone_levels))};
     p.groups[0] = (g.width + 7) / 8;
     p.groups[1] = (g.height + 7) / 8;
-    g.add_pass(std::move(p));
+    g.add_pixel_pass(std::move(p), view);
 }
 
 }  // namespace fg

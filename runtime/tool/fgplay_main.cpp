@@ -30,6 +30,10 @@ int main(int argc, char** argv) {
     render->add_flag("--depth", r.depth, "also write 16-bit depth PNGs");
     render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
     render->add_option("--device", r.device, "Vulkan device: index or name substring");
+    render->add_flag("--lens-mask", r.lens_mask, "skip the pixels a headset's lens hides (an inscribed ellipse)");
+    render->add_option("--foveation", r.foveation,
+                       "fixed foveation: fovea radius in half image heights (0 off; default: the scene's)")
+        ->check(CLI::Range(0.0, 4.0));
 
     fg::bench::BenchOptions b;
     auto* bench = app.add_subcommand("bench", "accuracy versus time: sweep the knobs, compare with a reference");

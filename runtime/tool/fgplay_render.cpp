@@ -31,6 +31,8 @@ int render(const RenderOptions& o) {
         frame.cone_levels = o.cone_levels;
         frame.count_evaluations = o.count;
         frame.knobs = o.knobs;
+        frame.lens_mask = o.lens_mask;
+        frame.foveation = o.foveation;
         Diagnostics ignore;
         SceneSettings scene = parse_scene_settings(&pack->manifest.scene, "/scene", ignore);
         StereoSettings stereo;

@@ -26,6 +26,8 @@ struct RenderOptions {
     bool validation = false;
     std::string device;
     std::map<std::string, double> knobs;
+    bool lens_mask = false;
+    double foveation = -1.0;   // < 0: as the scene says
 };
 
 int render(const RenderOptions& o);

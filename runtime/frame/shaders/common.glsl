@@ -8,6 +8,7 @@ struct FgView {
     vec4 up;        // xyz unit up axis
     vec4 forward;   // xyz unit forward axis
     vec4 tan_fov;   // tangents of the frustum edges: x left (<0), y right, z down (<0), w up
+    vec4 lens;      // the lens mask: an ellipse in uv, xy centre, zw radii; zw = 0 when off
 };
 
 layout(set = 0, binding = 0, std140) uniform FgFrame {
@@ -16,6 +17,7 @@ layout(set = 0, binding = 0, std140) uniform FgFrame {
     uvec4 info;          // x frame index, y cone levels, zw unused
     vec4 time;           // x seconds, y world scale, z interpupillary distance (scene units), w unused
     vec4 pixel;          // x tangent of the half-diagonal of one full-resolution pixel; y tangent per pixel
+    vec4 foveation;      // x fovea radius in half image heights (0: off), y blend band width
 } fg_frame;
 
 layout(set = 0, binding = 1, std140) uniform FgScene {
@@ -97,3 +99,47 @@ ivec4 fg_level_rect(int level, ivec2 full)
 
 // A miss in a depth image. Depths are distances along the ray, never NaN or infinite.
 #define FG_MISS (-1.0)
+
+// The lens mask (seed 001's "iris"): a pixel whose footprint lies wholly outside the ellipse the
+// headset's lens shows is never marched or shaded. `margin` (uv) widens the ellipse by a coarse
+// footprint, so a coarse level skips a block only if every child pixel skips too.
+bool fg_outside_lens(int view, vec2 uv, vec2 margin)
+{
+    vec4 lens = fg_frame.views[view].lens;
+    if (lens.z <= 0.0) return false;
+    vec2 q = (uv - lens.xy) / (lens.zw + margin);
+    return dot(q, q) > 1.0;
+}
+
+bool fg_outside_lens(int view, ivec2 pixel)
+{
+    return fg_outside_lens(view, (vec2(pixel) + 0.5) / vec2(fg_view_size(view)), vec2(0.0));
+}
+
+// Fixed foveation: 0 inside the fovea (around the lens centre), rising to 1 across the blend band,
+// 1 in the periphery. The centre eye of stereo reprojection is never foveated.
+float fg_periphery(int view, ivec2 pixel)
+{
+    if (fg_frame.foveation.x <= 0.0 || view == 2) return 0.0;
+    vec2 size = vec2(fg_view_size(view));
+    vec4 lens = fg_frame.views[view].lens;
+    vec2 centre = (lens.z > 0.0 ? lens.xy : vec2(0.5)) * size;
+    float r = length(vec2(pixel) + 0.5 - centre) / (0.5 * size.y);
+    return clamp((r - fg_frame.foveation.x) / max(fg_frame.foveation.y, 1e-6), 0.0, 1.0);
+}
+
+// Foveation splits each per-eye pass into two dispatches, so that no SIMD lane idles on a skipped
+// pixel: the full-resolution one (stride 1) takes the pixels short of the periphery, the
+// periphery's own (stride 2, a quarter of the invocations) the even pixel of each 2x2 block beyond.
+bool fg_dispatch_takes(int view, ivec2 pixel, int stride)
+{
+    // Pixels outside the lens cost nothing (they only write a miss): the first dispatch takes them.
+    bool periphery = fg_periphery(view, pixel) >= 1.0 && !fg_outside_lens(view, pixel);
+    return periphery == (stride == 2);
+}
+
+// The hit threshold's footprint in full-resolution pixels: 2 where a pixel stands for its block.
+float fg_footprint(int view, ivec2 pixel)
+{
+    return fg_periphery(view, pixel) >= 1.0 ? 2.0 : 1.0;
+}

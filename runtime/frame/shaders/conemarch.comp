@@ -24,6 +24,7 @@ layout(push_constant) uniform FgConePush {
     int level;           // 0 = full resolution
     int top;             // 1 for the coarsest level: no parent
     int counter_slot;
+    int stride;          // level 0: 1, or 2 for the foveated periphery's dispatch
 } pc;
 
 // Full resolution with FG_TAIL_AFTER > 0: a pixel still marching after that many steps goes to
@@ -37,11 +38,22 @@ void main()
 {
     ivec2 full = fg_view_size(pc.view);
     ivec4 rect = fg_level_rect(pc.level, full);
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
     if (pixel.x >= rect.z || pixel.y >= rect.w) return;
     float block = float(1 << pc.level);
     // The footprint's centre in full-resolution pixels; an edge block may reach past the image.
     vec2 centre = (vec2(pixel) + 0.5) * block;
+    if (pc.level == 0 && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    if (fg_outside_lens(pc.view, centre / vec2(full), vec2(pc.level == 0 ? 0.0 : block) / vec2(full))) {
+        imageStore(fg_levels, rect.xy + pixel, vec4(pc.level == 0 ? FG_MISS : fg_escaped(), fg_escaped(), 0.0, 0.0));
+        if (pc.level == 0) {
+            imageStore(fg_depth, pixel, vec4(FG_MISS));
+#ifdef FG_HAS_GLOW
+            imageStore(fg_glow, pixel, vec4(1e30));
+#endif
+        }
+        return;
+    }
     vec3 ro = fg_ray_origin(pc.view);
     vec3 rd = fg_ray_dir(pc.view, centre / vec2(full));
     float parent = fg_bounds_interval(ro, rd, fg_cone_tan(pc.level)).x;
@@ -74,7 +86,7 @@ void main()
     } else {
         // Full resolution: the pixel's own ray from the parent's bound, with the hit rule.
         vec2 range = fg_bounds_interval(ro, rd, 0.0);
-        float cone = fg_cone_tan(0);
+        float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
         float t = max(parent, range.x);
         float bound = fg_escaped();   // where the pixel's cone first touched
         float result = FG_MISS;

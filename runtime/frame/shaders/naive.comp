@@ -10,18 +10,25 @@ layout(set = 0, binding = 3, r32f) uniform writeonly image2D fg_depth;   // t at
 layout(set = 0, binding = 4, r32f) uniform writeonly image2D fg_glow;    // closest approach of the ray
 #endif
 layout(set = 0, binding = 5, std430) buffer FgCounters { uint evaluations[]; } fg_counters;
-layout(push_constant) uniform FgNaivePush { int view; int counter_slot; } pc;
+layout(push_constant) uniform FgNaivePush { int view; int counter_slot; int stride; } pc;
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
     ivec2 size = ivec2(fg_frame.size.xy);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    if (fg_outside_lens(pc.view, pixel)) {
+        imageStore(fg_depth, pixel, vec4(FG_MISS));
+#ifdef FG_HAS_GLOW
+        imageStore(fg_glow, pixel, vec4(1e30));
+#endif
+        return;
+    }
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
     vec3 ro = fg_ray_origin(pc.view);
     vec3 rd = fg_ray_dir(pc.view, uv);
     vec2 range = fg_bounds_interval(ro, rd, 0.0);
-    float pixel_tan = fg_cone_tan(0);
+    float pixel_tan = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
     float result = FG_MISS;
     float closest = 1e30;
     uint evaluations = 0u;

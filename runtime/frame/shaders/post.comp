@@ -1,8 +1,9 @@
 //! pass: post
 //! needs: distance
-//! when: any-effect fog glow vignette foveation
+//! when: any-effect fog glow vignette
 // Post effects the pack lists, and only those: homogeneous scattering fog, glow from the closest
-// approach along the ray, the vignette; then tonemapping into the final image.
+// approach along the ray, the vignette; then tonemapping into the final image. (Foveation has
+// its own pass, fovea.comp, that runs after this one.)
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
@@ -11,7 +12,7 @@ layout(set = 0, binding = 4, rgba16f) uniform readonly image2D fg_color;
 layout(set = 0, binding = 5, r32f) uniform readonly image2D fg_glow;
 #endif
 layout(set = 0, binding = 6, rgba8) uniform writeonly image2D fg_final;
-layout(push_constant) uniform FgPostPush { int view; } pc;
+layout(push_constant) uniform FgPostPush { int view; int stride; } pc;
 
 vec3 fg_tonemap(vec3 c)
 {
@@ -21,9 +22,13 @@ vec3 fg_tonemap(vec3 c)
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
     ivec2 size = ivec2(fg_frame.size.xy);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    if (fg_outside_lens(pc.view, pixel)) {
+        imageStore(fg_final, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        return;
+    }
     vec3 color = imageLoad(fg_color, pixel).rgb;
     float t = imageLoad(fg_depth, pixel).x;
 #ifdef FG_HAS_GLOW

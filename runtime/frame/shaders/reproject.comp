@@ -21,6 +21,7 @@ layout(push_constant) uniform FgReprojectPush {
     int view;            // 0 left, 1 right
     int counter_slot;
     int levels;          // levels of the centre atlas, 0 .. levels - 1
+    int stride;          // 1, or 2 for the foveated periphery's dispatch
 } pc;
 
 const float FG_HUGE = 1e30;
@@ -97,16 +98,23 @@ float walk_level(int level, float t, float t_max)
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
     ivec2 size = fg_view_size(pc.view);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    if (fg_outside_lens(pc.view, pixel)) {
+        imageStore(fg_depth, pixel, vec4(FG_MISS));
+#ifdef FG_HAS_GLOW
+        imageStore(fg_glow, pixel, vec4(FG_HUGE));
+#endif
+        return;
+    }
     C = fg_frame.views[2];
     centre_size = fg_view_size(2);
     vec3 ro = fg_ray_origin(pc.view);
     r = fg_ray_dir(pc.view, (vec2(pixel) + 0.5) / vec2(size));
     b = ro - C.origin.xyz;
     vec2 range = fg_bounds_interval(ro, r, 0.0);
-    float cone = fg_cone_tan(0);
+    float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
     float result = FG_MISS;
     float closest = FG_HUGE;
     uint evaluations = 0u;

@@ -11,7 +11,7 @@ layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fg_color;   // H
 #else
 layout(set = 0, binding = 4, rgba8) uniform writeonly image2D fg_color;     // final, tonemapped
 #endif
-layout(push_constant) uniform FgShadePush { int view; } pc;
+layout(push_constant) uniform FgShadePush { int view; int stride; } pc;
 
 vec3 fg_background(vec3 rd)
 {
@@ -46,9 +46,13 @@ vec3 fg_tonemap(vec3 c)
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
     ivec2 size = ivec2(fg_frame.size.xy);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    if (fg_outside_lens(pc.view, pixel)) {
+        imageStore(fg_color, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        return;
+    }
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
     vec3 ro = fg_ray_origin(pc.view);
     vec3 rd = fg_ray_dir(pc.view, uv);

@@ -25,7 +25,7 @@ void main()
     vec3 ro = fg_ray_origin(pc.view);
     vec3 rd = fg_ray_dir(pc.view, (vec2(pixel) + 0.5) / vec2(full));
     vec2 range = fg_bounds_interval(ro, rd, 0.0);
-    float cone = fg_cone_tan(0);
+    float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
     float t = item.t;
     float closest = item.closest;
     uint evaluations = 0u;
