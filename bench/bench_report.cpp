@@ -134,9 +134,14 @@ void BenchReport::plot(const std::string& folder) const {
 }
 
 std::string BenchReport::summary_line() const {
-    // Per setting: totals over the views, and the worst misclassification.
+    // Equal accuracy means no worse than the baseline by more than 0.5 % of pixels in any view:
+    // the baseline's own hit rule misclassifies some pixels against the strict reference too.
+    std::map<std::string, double> base_wrong;
+    for (const auto& r : rows)
+        if (r.baseline) base_wrong[r.view] = r.misclassified_pct;
+    // Per setting: totals over the views, and the worst excess over the baseline.
     struct Total {
-        double ms = 0, evals = 0, worst = 0;
+        double ms = 0, evals = 0, excess = 0, worst = 0;
         bool ok = true;
     };
     std::map<std::string, Total> totals;
@@ -149,21 +154,22 @@ std::string BenchReport::summary_line() const {
         t.ms += r.frame_ms();
         t.evals += r.evaluations_per_pixel;
         t.worst = std::max(t.worst, r.misclassified_pct);
+        t.excess = std::max(t.excess, r.misclassified_pct - base_wrong[r.view]);
     }
     std::string best;
     Total best_total;
     for (const auto& [name, t] : totals) {
-        if (!t.ok || t.worst > 0.5) continue;
+        if (!t.ok || t.excess > 0.5) continue;
         if (best.empty() || t.ms < best_total.ms || (t.ms == 0 && t.evals < best_total.evals)) {
             best = name;
             best_total = t;
         }
     }
-    if (best.empty()) return "summary: no setting stays within 0.5 % misclassified pixels in every view";
-    return fmt::format("summary: best within 0.5 % misclassified pixels (worst view {:.3f} %): \"{}\": {:.2f}x less GPU "
-                       "time and {:.2f}x fewer SDF evaluations per pixel than {} (baseline worst view {:.3f} %)",
-                       best_total.worst, best, best_total.ms > 0 ? base.ms / best_total.ms : 0.0,
-                       best_total.evals > 0 ? base.evals / best_total.evals : 0.0, base_name, base.worst);
+    if (best.empty()) return "summary: no setting stays within 0.5 % misclassified pixels of the baseline in every view";
+    return fmt::format("summary: best within 0.5 % misclassified pixels of the baseline (worst view {:.3f} %, baseline "
+                       "{:.3f} %): \"{}\": {:.2f}x less GPU time and {:.2f}x fewer SDF evaluations per pixel than {}",
+                       best_total.worst, base.worst, best, best_total.ms > 0 ? base.ms / best_total.ms : 0.0,
+                       best_total.evals > 0 ? base.evals / best_total.evals : 0.0, base_name);
 }
 
 }  // namespace fg::bench

@@ -41,7 +41,7 @@ struct BenchReport {
     void fill_ratios();
     void write(const std::string& folder) const;
     void plot(const std::string& folder) const;
-    // The best setting within 0.5 % misclassified pixels in every view: its speed-up in time and in
+    // The best setting within 0.5 % misclassified pixels of the baseline in every view: its speed-up in time and in
     // evaluations over the baseline, summed over the views.
     std::string summary_line() const;
 };

@@ -1,0 +1,68 @@
+# fgplay as a user runs it: a bad pack is refused with the byte it broke at, a good one renders
+# both eyes with only the passes asked for, and `fgplay bench --quick` writes its table, CSV and
+# plots and ends on the summary line.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(ENV{MESA_SHADER_CACHE_DISABLE} true)
+
+function(expect_failure what pattern)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "${what}: exited 0")
+  endif()
+  if(NOT "${out}${err}" MATCHES "${pattern}")
+    message(FATAL_ERROR "${what}: expected a message matching '${pattern}', got: ${out}${err}")
+  endif()
+endfunction()
+
+expect_failure("a missing pack" "does not exist|not exist" ${FGPLAY} render ${WORK}/missing.fgpack --out ${WORK}/x)
+file(WRITE ${WORK}/not_a_pack.fgpack "hello")
+expect_failure("a file that is no pack" "byte 0" ${FGPLAY} render ${WORK}/not_a_pack.fgpack --out ${WORK}/x)
+expect_failure("a bad size" "--size" ${FGPLAY} render ${WORK}/not_a_pack.fgpack --size 12 --out ${WORK}/x)
+
+execute_process(COMMAND ${FGC} compile ${SOURCE}/graphs/gallery/mandelbulb.json -o ${WORK}/bulb.fgpack RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fgc compile failed on the gallery Mandelbulb")
+endif()
+expect_failure("an unknown knob" "no_such_knob" ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --knob no_such_knob=1
+               --out ${WORK}/x)
+
+execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --out ${WORK}/frame --describe --lens-mask
+                        --foveation 0.5 --validation
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fgplay render failed: ${out}${err}")
+endif()
+foreach(expected "fovea.left" "conemarch.right.L0.periphery" "lens mask on" "SDF evaluations per output pixel")
+  string(FIND "${out}" "${expected}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "fgplay render printed no '${expected}':\n${out}")
+  endif()
+endforeach()
+foreach(image left.png right.png side_by_side.png)
+  if(NOT EXISTS ${WORK}/frame/${image})
+    message(FATAL_ERROR "fgplay render wrote no ${image}")
+  endif()
+endforeach()
+
+execute_process(COMMAND ${FGPLAY} bench --graph ${SOURCE}/graphs/gallery/mandelbulb.json --quick --size 48 --frames 1
+                        --out ${WORK}/bench
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fgplay bench --quick failed: ${out}${err}")
+endif()
+foreach(file results.csv results.md results.json time_vs_error.png time_per_pass.png)
+  if(NOT EXISTS ${WORK}/bench/${file})
+    message(FATAL_ERROR "fgplay bench wrote no ${file}:\n${out}${err}")
+  endif()
+endforeach()
+string(STRIP "${out}" out)
+string(REGEX MATCH "[^\n]*$" last "${out}")
+if(NOT last MATCHES "^summary: ")
+  message(FATAL_ERROR "fgplay bench's last line is no summary: ${last}")
+endif()
+file(STRINGS ${WORK}/bench/results.csv rows)
+list(LENGTH rows n)
+if(n LESS 10)
+  message(FATAL_ERROR "fgplay bench wrote ${n} CSV lines")
+endif()
