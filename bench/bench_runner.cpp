@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
@@ -69,6 +70,26 @@ FrameSettings reference_settings(std::uint32_t size) {
     return f;
 }
 
+// Compiles a graph three times: the first compile in a process also initialises glslang.
+std::optional<CompileFigure> measure_compile(const std::string& path, std::optional<std::vector<std::uint8_t>>& bytes,
+                                             Diagnostics& diag) {
+    auto text = read_text(path);
+    if (!text) {
+        diag.error(fmt::format("cannot read {}", path));
+        return std::nullopt;
+    }
+    std::vector<double> times;
+    std::optional<CompileResult> result;
+    for (int i = 0; i < 3; ++i) {
+        auto start = std::chrono::steady_clock::now();
+        result = compile_graph(*text, NodeLibrary::builtin(), {}, diag);
+        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (!result) return std::nullopt;
+    }
+    bytes = pack_bytes(*result);
+    return CompileFigure{path, times.front(), median(times), bytes->size()};
+}
+
 }  // namespace
 
 int run_bench(const BenchOptions& o) {
@@ -84,32 +105,33 @@ int run_bench(const BenchOptions& o) {
     std::optional<Pack> pack;
     std::vector<CompileFigure> compile_figures;
     if (!o.graph.empty()) {
-        auto text = read_text(o.graph);
-        if (!text) {
-            fmt::print(stderr, "fgplay bench: cannot read {}\n", o.graph);
-            return 1;
-        }
-        std::vector<double> times;
-        std::optional<CompileResult> result;
-        for (int i = 0; i < 3; ++i) {
-            auto start = std::chrono::steady_clock::now();
-            result = compile_graph(*text, NodeLibrary::builtin(), {}, diag);
-            times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-            if (!result) break;
-        }
-        if (!result) {
+        std::optional<std::vector<std::uint8_t>> bytes;
+        auto figure = measure_compile(o.graph, bytes, diag);
+        if (!figure) {
             fmt::print(stderr, "{}", diag.format(o.graph));
             return 1;
         }
-        auto bytes = pack_bytes(*result);
-        compile_figures.push_back({o.graph, times.front(), median(times), bytes.size()});
-        pack = read_pack(bytes, diag);
+        compile_figures.push_back(*figure);
+        pack = read_pack(*bytes, diag);
     } else {
         pack = read_pack_file(o.pack, diag);
     }
     if (!pack) {
         fmt::print(stderr, "{}", diag.format(o.pack));
         return 1;
+    }
+    // The compile side of every gallery graph, for the report.
+    if (!o.gallery.empty() && std::filesystem::is_directory(o.gallery)) {
+        std::vector<std::filesystem::path> graphs;
+        for (const auto& e : std::filesystem::directory_iterator(o.gallery))
+            if (e.path().extension() == ".json") graphs.push_back(e.path());
+        std::sort(graphs.begin(), graphs.end());
+        for (const auto& g : graphs) {
+            if (!o.graph.empty() && std::filesystem::equivalent(g, o.graph)) continue;
+            Diagnostics ignore;
+            std::optional<std::vector<std::uint8_t>> bytes;
+            if (auto figure = measure_compile(g.string(), bytes, ignore)) compile_figures.push_back(*figure);
+        }
     }
 
     auto ir = load_and_lower(pack->graph, NodeLibrary::builtin(), diag);
@@ -237,6 +259,7 @@ int run_bench(const BenchOptions& o) {
             double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
             fmt::print("[{:>3}/{}] {:<10} {:<44} {}  (about {:.0f} s left)\n", done, total, view.name, s.name,
                        row.error.empty() ? row.brief() : "error: " + row.error, left);
+            std::fflush(stdout);   // progress, even into a pipe or a log file
         }
     }
     BenchReport report{pack->manifest.name, ctx.device_name(), size, frames, rows, compile_figures};

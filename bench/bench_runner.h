@@ -11,6 +11,7 @@ namespace fg::bench {
 struct BenchOptions {
     std::string pack;             // a compiled pack, or empty with `graph`
     std::string graph;            // a graph to compile first
+    std::string gallery;          // also report the compile time and pack size of every graph here
     std::string out = "bench-results";
     bool quick = false;
     std::uint32_t size = 0;       // per-eye size; 0: 512 (quick: 128)

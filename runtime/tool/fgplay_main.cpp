@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     auto* bench = app.add_subcommand("bench", "accuracy versus time: sweep the knobs, compare with a reference");
     bench->add_option("pack", b.pack, "shader pack (or --graph)");
     bench->add_option("--graph", b.graph, "compile this graph first (and report its compile time)");
+    bench->add_option("--compile-gallery", b.gallery, "also report compile time and pack size of every graph in this folder");
     bench->add_option("--out", b.out, "output folder")->capture_default_str();
     bench->add_flag("--quick", b.quick, "a couple of minutes on two cores: 128x128, two views, a few settings");
     bench->add_option("--size", b.size, "per-eye size (default 512, quick 128)");

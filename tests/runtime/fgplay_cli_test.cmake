@@ -46,7 +46,7 @@ foreach(image left.png right.png side_by_side.png)
 endforeach()
 
 execute_process(COMMAND ${FGPLAY} bench --graph ${SOURCE}/graphs/gallery/mandelbulb.json --quick --size 48 --frames 1
-                        --out ${WORK}/bench
+                        --compile-gallery ${SOURCE}/graphs/gallery --out ${WORK}/bench
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fgplay bench --quick failed: ${out}${err}")
@@ -60,6 +60,10 @@ string(STRIP "${out}" out)
 string(REGEX MATCH "[^\n]*$" last "${out}")
 if(NOT last MATCHES "^summary: ")
   message(FATAL_ERROR "fgplay bench's last line is no summary: ${last}")
+endif()
+file(READ ${WORK}/bench/results.md table)
+if(NOT table MATCHES "## Compile side")
+  message(FATAL_ERROR "fgplay bench reported no compile side:\n${table}")
 endif()
 file(STRINGS ${WORK}/bench/results.csv rows)
 list(LENGTH rows n)
