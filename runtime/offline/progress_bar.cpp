@@ -28,7 +28,7 @@ void ProgressBar::advance(bool skipped) {
     ++done_;
     if (skipped) ++skipped_;
     else ++rendered_;
-    draw(done_ == total_);
+    draw(false);
 }
 
 void ProgressBar::draw(bool force) {
@@ -48,7 +48,7 @@ void ProgressBar::draw(bool force) {
 }
 
 void ProgressBar::finish() {
-    draw(true);
+    draw(true);   // the last state, whatever the throttle skipped
     if (terminal_) fmt::print(out_, "\n");
 }
 

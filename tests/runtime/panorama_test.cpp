@@ -18,6 +18,10 @@
 using namespace fg;
 using fg::test::RuntimeTest;
 
+namespace fg {
+void PrintTo(Projection p, std::ostream* os) { *os << projection_name(p); }
+}  // namespace fg
+
 namespace {
 
 constexpr std::uint32_t kWidth = 128, kHeight = 64;
@@ -82,7 +86,7 @@ class PanoramaAgainstReference : public RuntimeTest, public ::testing::WithParam
 
 TEST_P(PanoramaAgainstReference, depths_agree_with_the_cpu_twin_through_the_same_rays_and_hold_no_nan) {
     Projection projection = GetParam();
-    Pack pack = test::compile_pack(test::kRoomGraph);
+    Pack pack = test::compile_pack(test::room_graph());
     auto cpu = test::cpu_scene(pack);
     // Turned a little and off-centre, so no axis lines up with the image.
     HeadPose head = look_at({0.1, 0.2, 0.3}, {0.5, 0.1, -1.0});
@@ -118,7 +122,7 @@ INSTANTIATE_TEST_SUITE_P(Projections, PanoramaAgainstReference, ::testing::Value
 // neighbours: no larger than the 90th percentile of the image's own column-to-column steps
 // (edges of objects make the largest ones). The box behind the camera straddles the seam.
 TEST_F(RuntimeTest, an_ods_frame_wraps_around_its_seam) {
-    Pack pack = test::compile_pack(test::kRoomGraph);
+    Pack pack = test::compile_pack(test::room_graph());
     Panorama p = render_panorama(pack, Projection::Ods, looking_ahead());
     for (const Rgba8Image* img : {&p.frame.left, &p.frame.right}) {
         std::vector<double> steps;
@@ -138,7 +142,7 @@ TEST_F(RuntimeTest, an_ods_frame_wraps_around_its_seam) {
 // first one rolled by half its width. Directions and eye positions come out of sin and cos of
 // different angles, so a silhouette pixel may round the other way; nearly all must match exactly.
 TEST_F(RuntimeTest, an_ods_frame_turned_half_a_turn_is_the_same_frame_rolled_by_half_its_width) {
-    Pack pack = test::compile_pack(test::kRoomGraph);
+    Pack pack = test::compile_pack(test::room_graph());
     HeadPose ahead = looking_ahead();
     HeadPose behind{ahead.position, glm::angleAxis(std::numbers::pi, glm::dvec3(0.0, 1.0, 0.0)) * ahead.orientation};
     Panorama a = render_panorama(pack, Projection::Ods, ahead);
@@ -162,7 +166,7 @@ TEST_F(RuntimeTest, an_ods_frame_turned_half_a_turn_is_the_same_frame_rolled_by_
 }
 
 TEST_F(RuntimeTest, a_panorama_runs_only_the_passes_its_rays_allow) {
-    Pack pack = test::compile_pack(test::kRoomGraph);
+    Pack pack = test::compile_pack(test::room_graph());
     auto programs = [&](Projection projection, StereoMode mode) {
         FrameSettings fs;
         fs.width = kWidth;

@@ -18,16 +18,6 @@ using fg::test::RuntimeTest;
 
 namespace {
 
-// Four frames at 3 fps over one second: a move forward, a turn to look at the ball, a zoom.
-const char* kPath = R"({
-  "format": "fractograph-camera-path", "version": 1, "fps": 3,
-  "keyframes": [
-    {"time": 0.0, "position": [0.0, 0.0, 0.5], "target": [0.0, -0.2, -2.0], "ease": "in-out"},
-    {"time": 0.5, "position": [0.2, 0.1, 0.0], "orientation": [0.98, 0.0, 0.2, 0.0], "world_scale": 2.0},
-    {"time": 1.0, "position": [0.3, 0.0, -0.4], "target": [0.0, 0.0, -2.0], "world_scale": 4.0}
-  ]
-})";
-
 std::vector<char> file_bytes(const std::filesystem::path& p) {
     std::ifstream f(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
@@ -41,7 +31,9 @@ protected:
                ("fg_path_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         std::filesystem::remove_all(dir_);
         Diagnostics diag;
-        path_ = CameraPath::parse(nlohmann::json::parse(kPath), 1.0, diag);
+        // Four frames at 3 fps over one second: a move forward, a turn to look at the ball, a zoom.
+        auto json = nlohmann::json::parse(test::read_source_file("tests/runtime/data/short_path.json"));
+        path_ = CameraPath::parse(json, 1.0, diag);
         ASSERT_TRUE(path_) << diag.format();
         settings_.projection = Projection::Ods;
         settings_.width = 64;
@@ -64,7 +56,7 @@ protected:
 }  // namespace
 
 TEST_F(PathRender, a_path_rendered_as_one_range_and_as_two_shards_writes_identical_files) {
-    Pack pack = test::compile_pack(test::kRoomGraph);
+    Pack pack = test::compile_pack(test::room_graph());
     ASSERT_EQ(path_->frame_count(), 4);
     FrameRange all{0, 4};
     run(pack, "whole", all);
@@ -85,7 +77,7 @@ TEST_F(PathRender, a_path_rendered_as_one_range_and_as_two_shards_writes_identic
 }
 
 TEST_F(PathRender, resume_skips_verified_frames_and_renders_missing_or_corrupted_ones_again) {
-    Pack pack = test::compile_pack(test::kRoomGraph);
+    Pack pack = test::compile_pack(test::room_graph());
     FrameRange all{0, 4};
     auto first = run(pack, "out", all);
     EXPECT_EQ(first.rendered, 4);
