@@ -13,8 +13,10 @@ namespace fg {
 
 namespace {
 bool write_then_rename(const std::string& path, std::span<const std::uint8_t> bytes) {
-    // Unique per process: two tasks given overlapping ranges never write the same temporary.
-    std::string tmp = fmt::format("{}.tmp{}", path, static_cast<long>(::getpid()));
+    // Unique per host and process: tasks given overlapping ranges never share a temporary.
+    char host[64] = {};
+    ::gethostname(host, sizeof host - 1);
+    std::string tmp = fmt::format("{}.tmp.{}.{}", path, host, static_cast<long>(::getpid()));
     {
         std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
         if (!f) return false;
