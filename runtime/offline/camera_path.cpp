@@ -82,15 +82,15 @@ std::optional<CameraPath> CameraPath::parse(const nlohmann::json& j, double defa
             key.time = k["time"].get<double>();
         if (!path.keys_.empty() && key.time <= path.keys_.back().time)
             diag.error(fmt::format("times must increase: {} follows {}", key.time, path.keys_.back().time), ptr + "/time");
+        bool position_ok = k.contains("position") && read_vec3(k["position"], ptr + "/position", key.position, diag);
         if (!k.contains("position")) diag.error("expected a position [x, y, z]", ptr + "/position");
-        else read_vec3(k["position"], ptr + "/position", key.position, diag);
         bool has_target = k.contains("target"), has_quat = k.contains("orientation");
         if (has_target == has_quat)
             diag.error("give either a target [x, y, z] or an orientation [w, x, y, z]", ptr);
         if (has_target) {
             glm::dvec3 t;
             if (read_vec3(k["target"], ptr + "/target", t, diag)) {
-                if (glm::length(t - key.position) < 1e-12) diag.error("the target is at the position", ptr + "/target");
+                if (position_ok && glm::length(t - key.position) < 1e-12) diag.error("the target is at the position", ptr + "/target");
                 key.target = t;
             }
             if (k.contains("up") && read_vec3(k["up"], ptr + "/up", key.up, diag) && glm::length(key.up) < 1e-12)
@@ -137,12 +137,12 @@ std::optional<CameraPath> CameraPath::load(const std::string& file, double defau
         diag.error(fmt::format("cannot read {}", file));
         return std::nullopt;
     }
-    nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (j.is_discarded()) {
-        diag.error("not valid JSON");
+    try {
+        return parse(nlohmann::json::parse(in), default_world_scale, diag);
+    } catch (const nlohmann::json::parse_error& e) {
+        diag.error(fmt::format("not valid JSON at byte {}: {}", e.byte, e.what()));
         return std::nullopt;
     }
-    return parse(j, default_world_scale, diag);
 }
 
 int CameraPath::frame_count() const {
