@@ -3,6 +3,7 @@
 // would be) write identical files; --resume skips exactly the frames on disk that verify.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -27,8 +28,9 @@ class PathRender : public RuntimeTest {
 protected:
     void SetUp() override {
         RuntimeTest::SetUp();
-        dir_ = std::filesystem::path(::testing::TempDir()) /
-               ("fg_path_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');
+        dir_ = std::filesystem::path(::testing::TempDir()) / ("fg_path_" + name);
         std::filesystem::remove_all(dir_);
         Diagnostics diag;
         // Four frames at 3 fps over one second: a move forward, a turn to look at the ball, a zoom.
@@ -53,9 +55,15 @@ protected:
     PathRenderSettings settings_;
 };
 
+class PathShards : public PathRender, public ::testing::WithParamInterface<Projection> {};
+
 }  // namespace
 
-TEST_F(PathRender, a_path_rendered_as_one_range_and_as_two_shards_writes_identical_files) {
+// Every projection, the cone-marched ones included; equirect also supersampled.
+TEST_P(PathShards, a_path_rendered_as_one_range_and_as_two_shards_writes_identical_files) {
+    settings_.projection = GetParam();
+    if (settings_.projection == Projection::Equirect) settings_.supersample = 2;
+    if (settings_.projection == Projection::Perspective) settings_.width = 32;
     Pack pack = test::compile_pack(test::room_graph());
     ASSERT_EQ(path_->frame_count(), 4);
     FrameRange all{0, 4};
@@ -75,6 +83,10 @@ TEST_F(PathRender, a_path_rendered_as_one_range_and_as_two_shards_writes_identic
     EXPECT_NE(file_bytes(frame_image_path((dir_ / "whole").string(), 0)),
               file_bytes(frame_image_path((dir_ / "whole").string(), 1)));
 }
+
+INSTANTIATE_TEST_SUITE_P(Projections, PathShards,
+                         ::testing::Values(Projection::Ods, Projection::Equirect, Projection::Perspective),
+                         [](const auto& info) { return std::string(projection_name(info.param)); });
 
 TEST_F(PathRender, resume_skips_verified_frames_and_renders_missing_or_corrupted_ones_again) {
     Pack pack = test::compile_pack(test::room_graph());
