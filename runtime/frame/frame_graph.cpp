@@ -80,6 +80,37 @@ std::int32_t FrameGraph::counter_slot(const std::string& group) {
     return static_cast<std::int32_t>(counter_groups_.size() - 1);
 }
 
+namespace {
+
+void require_pass(const PackManifest& manifest, const char* program) {
+    if (!manifest.find_pass(program))
+        throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", program));
+}
+
+// Panoramas run only what their rays allow. Equirect has one eye at the head's centre: the centre
+// view, marched as the stereo mode says (reprojection needs two eyes, so it cone-marches). ODS
+// moves the origin with every column, so a coarse level's cone from one origin bounds nothing and
+// there is no centre eye to reproject from: each eye is sphere traced per pixel.
+void add_panorama_passes(FrameGraph& g, const PackManifest& manifest) {
+    std::vector<int> views;
+    if (is_mono(g.settings.projection)) {
+        views = {kCentreView};
+        bool naive = g.settings.stereo == StereoMode::Naive;
+        require_pass(manifest, naive ? "naive" : "conemarch");
+        if (naive) add_naive_passes(g, kCentreView);
+        else add_conemarch_passes(g, kCentreView);
+    } else {
+        require_pass(manifest, "naive");
+        views = {kLeftView, kRightView};
+        for (int eye : views) add_naive_passes(g, eye);
+    }
+    for (int view : views) add_shade_pass(g, view);
+    if (g.has_post)
+        for (int view : views) add_post_pass(g, view);
+}
+
+}  // namespace
+
 FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& settings, std::uint32_t centre_width,
                              std::uint32_t centre_height) {
     FrameGraph g;
@@ -95,6 +126,11 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
         g.settings.foveation = scene.foveation ? scene.foveation->inner_radius : 0.0;
         if (scene.foveation) g.settings.foveation_blend = scene.foveation->blend;
     }
+    if (settings.projection != Projection::Perspective) {
+        // The lens mask and foveation are the headset's: a panorama has neither lens nor gaze.
+        g.settings.lens_mask = false;
+        g.settings.foveation = 0.0;
+    }
     g.effects = manifest.effects;
     g.has_post = manifest.find_pass("post") != nullptr;
     g.manifest_has_tail = manifest.find_pass("tail") != nullptr;
@@ -102,11 +138,12 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
         auto it = settings.knobs.find("tail_after");
         g.tail_after = static_cast<std::uint32_t>(it != settings.knobs.end() ? it->second : tail->value);
     }
-    auto require = [&](const char* program) {
-        if (!manifest.find_pass(program))
-            throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", program));
-    };
+    auto require = [&](const char* program) { require_pass(manifest, program); };
     require("shade");
+    if (settings.projection != Projection::Perspective) {
+        add_panorama_passes(g, manifest);
+        return g;
+    }
     switch (settings.stereo) {
         case StereoMode::Naive:
             require("naive");
@@ -134,8 +171,15 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
 }
 
 std::string FrameGraph::describe() const {
-    std::string s = fmt::format("frame graph: {} stereo, {}x{} per eye, {} cone levels\n", stereo_mode_name(settings.stereo),
-                                width, height, settings.cone_levels);
+    std::string s = settings.projection == Projection::Perspective
+                        ? fmt::format("frame graph: {} stereo, {}x{} per eye, {} cone levels\n",
+                                      stereo_mode_name(settings.stereo), width, height, settings.cone_levels)
+                        : fmt::format("frame graph: {} panorama, {}x{} per eye, {}\n", projection_name(settings.projection),
+                                      width, height,
+                                      settings.projection == Projection::Ods ? "per-pixel eyes: naive marching"
+                                      : settings.stereo == StereoMode::Naive
+                                          ? "naive marching"
+                                          : fmt::format("{} cone levels", settings.cone_levels));
     s += fmt::format("pixels: lens mask {}, foveation {}\n", settings.lens_mask ? "on" : "off",
                      settings.foveation > 0.0 ? fmt::format("fovea radius {:g}, blend {:g}", settings.foveation,
                                                             settings.foveation_blend)

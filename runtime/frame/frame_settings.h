@@ -5,6 +5,8 @@
 #include <map>
 #include <string>
 
+#include "projection.h"
+
 namespace fg {
 
 enum class StereoMode {
@@ -19,6 +21,7 @@ bool parse_stereo_mode(const std::string& s, StereoMode& out);
 struct FrameSettings {
     std::uint32_t width = 256, height = 256;   // per eye
     StereoMode stereo = StereoMode::PerEye;
+    Projection projection = Projection::Perspective;   // panoramas: offline renders
     std::uint32_t cone_levels = 5;              // conemarch levels including full resolution
     bool count_evaluations = false;             // SDF evaluations per pass (a specialization constant)
     // Fewer pixels: the lens mask skips what the headset's lens hides; fixed foveation marches and

@@ -19,7 +19,7 @@ struct GpuView {
 struct GpuFrame {
     GpuView views[3];                  // left, right, centre
     std::array<std::uint32_t, 4> size; // eye w, h; centre w, h
-    std::array<std::uint32_t, 4> info; // frame index, cone levels
+    std::array<std::uint32_t, 4> info; // frame index, cone levels, projection
     std::array<float, 4> time;         // seconds, world scale, ipd
     std::array<float, 4> pixel;        // half-diagonal tangent, tangent per pixel
     std::array<float, 4> foveation;    // fovea radius (0: off), blend band

@@ -20,7 +20,7 @@ HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, con
     stereo_.width = frame.width;
     stereo_.height = frame.height;
     // The frame graph's sizes depend only on the fields of view, not on the pose.
-    views_ = make_stereo_views(scene_camera(), scene_fov(), scene_fov(), stereo_);
+    views_ = make_views(scene_camera());
     executor_ = std::make_unique<FrameExecutor>(
         ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, views_.centre.width, views_.centre.height));
 }
@@ -37,15 +37,28 @@ Fov HeadlessRenderer::scene_fov() const {
     return Fov::symmetric(s.camera.fov_deg, static_cast<double>(frame_.width) / frame_.height);
 }
 
+StereoViews HeadlessRenderer::make_views(const HeadPose& head) const {
+    if (frame_.projection != Projection::Perspective) return make_panorama_views(head, stereo_);
+    return make_stereo_views(head, scene_fov(), scene_fov(), stereo_);
+}
+
+void HeadlessRenderer::set_world_scale(double world_scale) { stereo_.world_scale = world_scale; }
+
 RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
-    views_ = make_stereo_views(head, scene_fov(), scene_fov(), stereo_);
-    executor_->set_frame(make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index));
+    views_ = make_views(head);
+    GpuFrame gpu = make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index);
+    gpu.info[2] = static_cast<std::uint32_t>(frame_.projection);
+    executor_->set_frame(gpu);
     RenderedFrame out;
     out.stats = executor_->run();
-    out.left = rgba8_from_bytes(executor_->download("final.left"), frame_.width, frame_.height);
-    out.right = rgba8_from_bytes(executor_->download("final.right"), frame_.width, frame_.height);
-    out.depth_left = floats(executor_->download("depth.left"));
-    out.depth_right = floats(executor_->download("depth.right"));
+    bool mono = is_mono(frame_.projection);
+    std::string left = mono ? "centre" : "left";
+    out.left = rgba8_from_bytes(executor_->download("final." + left), frame_.width, frame_.height);
+    out.depth_left = floats(executor_->download("depth." + left));
+    if (!mono) {
+        out.right = rgba8_from_bytes(executor_->download("final.right"), frame_.width, frame_.height);
+        out.depth_right = floats(executor_->download("depth.right"));
+    }
     return out;
 }
 

@@ -13,7 +13,8 @@
 namespace fg {
 
 struct RenderedFrame {
-    Rgba8Image left, right;
+    Rgba8Image left, right;            // a mono projection (equirect) fills only left
+
     std::vector<float> depth_left, depth_right;
     FrameStats stats;
 };
@@ -29,11 +30,15 @@ public:
     std::string describe() const { return executor_->graph().describe(); }
 
     RenderedFrame render(const HeadPose& head, double time, std::uint32_t frame_index = 0);
+    // Scene units per metre from the next frame on (a camera path zooms): the IPD follows it.
+    void set_world_scale(double world_scale);
     FrameExecutor& executor() { return *executor_; }
 
 private:
     const vk::Context& ctx_;
     const Pack& pack_;
+    StereoViews make_views(const HeadPose& head) const;
+
     FrameSettings frame_;
     StereoSettings stereo_;
     StereoViews views_;

@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
     CLI::App app{"fgplay: plays Fractograph shader packs (.fgpack)"};
     app.require_subcommand(1);
     fg::fgplay::RenderOptions r;
-    std::string size = "512x512", stereo = "per-eye", camera;
+    std::string size = "512x512", stereo = "per-eye", camera, frames = "1", projection = "perspective";
     std::vector<std::string> knobs;
     bool naive = false;
 
@@ -23,7 +23,13 @@ int main(int argc, char** argv) {
     render->add_option("--stereo", stereo, "reproject | per-eye | naive")->capture_default_str();
     render->add_flag("--naive", naive, "the baseline: naive per-eye sphere tracing (same as --stereo naive)");
     render->add_option("--levels", r.cone_levels, "conemarch levels, full resolution included")->capture_default_str();
-    render->add_option("--frames", r.frames, "frames to render (numbered images when more than one)");
+    render->add_option("--frames", frames, "frames to render (numbered images when more than one); with --path a range A:B");
+    render->add_option("--path", r.path, "render a camera path (docs/camera-path.md) to DIR/frame_NNNNNN.png")->check(CLI::ExistingFile);
+    render->add_option("--projection", projection, "with --path: perspective | equirect | ods")->capture_default_str();
+    render->add_option("--supersample", r.supersample, "with --path: samples per pixel along each axis (1-8)")->capture_default_str();
+    render->add_option("--shard", r.shard, "with --path: I/N, render shard I of N of the frame range (a job array's index)");
+    render->add_flag("--resume", r.resume, "with --path: skip frames already on disk and verified");
+    render->add_flag("!--no-progress", r.progress, "with --path: no progress bar on stderr");
     render->add_option("--time", r.time, "scene time in seconds of the first frame");
     render->add_option("--knob", knobs, "override an accuracy knob: name=value (fgc info lists them)");
     render->add_flag("--describe", r.describe, "print the frame graph: passes, images, sizes");
@@ -66,6 +72,28 @@ int main(int argc, char** argv) {
         }
         r.width = w;
         r.height = h;
+        if (!fg::parse_projection(projection, r.projection)) {
+            fmt::print(stderr, "fgplay: --projection is perspective, equirect or ods, not '{}'\n", projection);
+            return 2;
+        }
+        if (r.path.empty()) {
+            if (r.projection != fg::Projection::Perspective || r.resume || !r.shard.empty() || r.supersample != 1) {
+                fmt::print(stderr, "fgplay: --projection, --supersample, --shard and --resume go with --path\n");
+                return 2;
+            }
+            try {
+                std::size_t used = 0;
+                r.frames = std::stoi(frames, &used);
+                if (used != frames.size() || r.frames < 1) throw std::invalid_argument(frames);
+            } catch (const std::exception&) {
+                fmt::print(stderr, "fgplay: --frames without --path is a count, not '{}'\n", frames);
+                return 2;
+            }
+        } else {
+            r.frame_range = render->count("--frames") ? frames : ":";
+            // Panoramas are twice as wide as high unless --size says otherwise.
+            if (!render->count("--size") && r.projection != fg::Projection::Perspective) r.height = r.width / 2;
+        }
         if (naive) stereo = "naive";
         if (!fg::parse_stereo_mode(stereo, r.stereo)) {
             fmt::print(stderr, "fgplay: --stereo is reproject, per-eye or naive, not '{}'\n", stereo);

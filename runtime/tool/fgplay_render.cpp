@@ -12,6 +12,7 @@
 namespace fg::fgplay {
 
 int render(const RenderOptions& o) {
+    if (!o.path.empty()) return render_path(o);
     Diagnostics diag;
     auto pack = read_pack_file(o.pack, diag);
     if (!pack) {

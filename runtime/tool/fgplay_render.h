@@ -19,6 +19,14 @@ struct RenderOptions {
     StereoMode stereo = StereoMode::PerEye;
     std::uint32_t cone_levels = 5;
     int frames = 1;
+    // Offline rendering of a camera path (fgplay_render_path.cpp).
+    std::string path;                // camera path JSON (docs/camera-path.md)
+    std::string frame_range;         // --frames with --path: A:B
+    std::string shard;               // I/N
+    Projection projection = Projection::Perspective;
+    std::uint32_t supersample = 1;
+    bool resume = false;
+    bool progress = true;
     double time = 0.0;
     bool describe = false;
     bool depth = false;
@@ -31,5 +39,6 @@ struct RenderOptions {
 };
 
 int render(const RenderOptions& o);
+int render_path(const RenderOptions& o);
 
 }  // namespace fg::fgplay

@@ -14,7 +14,7 @@ struct FgView {
 layout(set = 0, binding = 0, std140) uniform FgFrame {
     FgView views[3];     // 0 left, 1 right, 2 centre
     uvec4 size;          // xy eye image size, zw centre-eye image size (wider: it covers both eyes)
-    uvec4 info;          // x frame index, y cone levels, zw unused
+    uvec4 info;          // x frame index, y cone levels, z projection (FG_PROJECTION_*), w unused
     vec4 time;           // x seconds, y world scale, z interpupillary distance (scene units), w unused
     vec4 pixel;          // x tangent of the half-diagonal of one full-resolution pixel; y tangent per pixel
     vec4 foveation;      // x fovea radius in half image heights (0: off), y blend band width
@@ -36,18 +36,46 @@ layout(set = 0, binding = 1, std140) uniform FgScene {
     vec4 misc2;          // x foveation blend, yzw unused
 } fg_scene;
 
-// Ray direction through a point of a view's image plane, uv in [0, 1]^2 with y down.
+// How a pixel becomes a ray (fg_frame.info.z, the same for every pass of a frame): the view's
+// perspective frustum (the headset), or offline panoramas: equirectangular around the view's
+// origin, and omni-directional stereo (ODS), where each column's eye sits on the circle of the
+// interpupillary distance, looking along the tangent, as 360-degree stereo video players expect.
+#define FG_PROJECTION_PERSPECTIVE 0u
+#define FG_PROJECTION_EQUIRECT 1u
+#define FG_PROJECTION_ODS 2u
+
+// Longitude (0 straight ahead, positive to the right) and latitude (positive up) of a panorama's
+// uv in [0, 1]^2, y down.
+vec2 fg_panorama_angles(vec2 uv)
+{
+    return vec2((uv.x - 0.5) * 6.28318531, (0.5 - uv.y) * 3.14159265);
+}
+
+// Ray direction through a point of a view's image, uv in [0, 1]^2 with y down.
 vec3 fg_ray_dir(int view, vec2 uv)
 {
     FgView v = fg_frame.views[view];
+    if (fg_frame.info.z != FG_PROJECTION_PERSPECTIVE) {
+        vec2 a = fg_panorama_angles(uv);
+        return cos(a.y) * (sin(a.x) * v.right.xyz + cos(a.x) * v.forward.xyz) + sin(a.y) * v.up.xyz;
+    }
     float tx = mix(v.tan_fov.x, v.tan_fov.y, uv.x);
     float ty = mix(v.tan_fov.w, v.tan_fov.z, uv.y);
     return normalize(v.forward.xyz + tx * v.right.xyz + ty * v.up.xyz);
 }
 
-vec3 fg_ray_origin(int view)
+// Ray origin of a pixel: the view's eye, except in ODS, where the left (view 0) and right eye
+// (view 1) of each column sit half the IPD to either side of the head, across that column's
+// direction (the views' origins are the head's centre then).
+vec3 fg_ray_origin(int view, vec2 uv)
 {
-    return fg_frame.views[view].origin.xyz;
+    FgView v = fg_frame.views[view];
+    if (fg_frame.info.z == FG_PROJECTION_ODS && view != 2) {
+        float lon = fg_panorama_angles(uv).x;
+        float side = view == 0 ? -0.5 : 0.5;
+        return v.origin.xyz + side * fg_frame.time.z * (cos(lon) * v.right.xyz - sin(lon) * v.forward.xyz);
+    }
+    return v.origin.xyz;
 }
 
 // The interval [near, far] of distances along a ray where it can meet the scene bounds (a sphere),

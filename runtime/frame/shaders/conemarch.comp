@@ -54,7 +54,7 @@ void main()
         }
         return;
     }
-    vec3 ro = fg_ray_origin(pc.view);
+    vec3 ro = fg_ray_origin(pc.view, centre / vec2(full));
     vec3 rd = fg_ray_dir(pc.view, centre / vec2(full));
     float parent = fg_bounds_interval(ro, rd, fg_cone_tan(pc.level)).x;
     if (pc.top == 0) {

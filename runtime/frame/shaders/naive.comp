@@ -25,7 +25,7 @@ void main()
         return;
     }
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
-    vec3 ro = fg_ray_origin(pc.view);
+    vec3 ro = fg_ray_origin(pc.view, uv);
     vec3 rd = fg_ray_dir(pc.view, uv);
     vec2 range = fg_bounds_interval(ro, rd, 0.0);
     float pixel_tan = fg_cone_tan(0) * fg_footprint(pc.view, pixel);

@@ -40,8 +40,11 @@ void main()
     color = mix(fg_scene.fog.rgb, color, exp(-fg_scene.fog.a * distance_through));
 #endif
 #ifdef FG_HAS_VIGNETTE
-    vec2 q = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
-    color *= 1.0 - fg_scene.misc.z * smoothstep(0.3, 1.4, dot(q, q));
+    // A comfort effect of the headset's frustum; a panorama has no edges to darken.
+    if (fg_frame.info.z == FG_PROJECTION_PERSPECTIVE) {
+        vec2 q = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
+        color *= 1.0 - fg_scene.misc.z * smoothstep(0.3, 1.4, dot(q, q));
+    }
 #endif
     imageStore(fg_final, pixel, vec4(fg_tonemap(color), 1.0));
 }

@@ -110,8 +110,9 @@ void main()
     }
     C = fg_frame.views[2];
     centre_size = fg_view_size(2);
-    vec3 ro = fg_ray_origin(pc.view);
-    r = fg_ray_dir(pc.view, (vec2(pixel) + 0.5) / vec2(size));
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+    vec3 ro = fg_ray_origin(pc.view, uv);
+    r = fg_ray_dir(pc.view, uv);
     b = ro - C.origin.xyz;
     vec2 range = fg_bounds_interval(ro, r, 0.0);
     float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);

@@ -54,7 +54,7 @@ void main()
         return;
     }
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
-    vec3 ro = fg_ray_origin(pc.view);
+    vec3 ro = fg_ray_origin(pc.view, uv);
     vec3 rd = fg_ray_dir(pc.view, uv);
     float t = imageLoad(fg_depth, pixel).x;
     vec3 color;

@@ -22,8 +22,9 @@ void main()
     FgTailItem item = fg_tail.items[index];
     ivec2 pixel = ivec2(item.pixel & 0xffffu, item.pixel >> 16);
     ivec2 full = fg_view_size(pc.view);
-    vec3 ro = fg_ray_origin(pc.view);
-    vec3 rd = fg_ray_dir(pc.view, (vec2(pixel) + 0.5) / vec2(full));
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(full);
+    vec3 ro = fg_ray_origin(pc.view, uv);
+    vec3 rd = fg_ray_dir(pc.view, uv);
     vec2 range = fg_bounds_interval(ro, rd, 0.0);
     float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
     float t = item.t;

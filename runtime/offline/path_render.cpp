@@ -1,0 +1,99 @@
+#include "path_render.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fmt/format.h>
+#include <stdexcept>
+
+#include <stb/stb_image_write.h>
+
+#include "frame_record.h"
+#include "progress_bar.h"
+#include "supersample.h"
+
+namespace fg {
+
+namespace {
+
+FrameSettings frame_settings(const PathRenderSettings& s) {
+    FrameSettings f;
+    f.width = s.width * s.supersample;
+    f.height = s.height * s.supersample;
+    f.stereo = s.stereo;
+    f.projection = s.projection;
+    f.cone_levels = s.cone_levels;
+    f.knobs = s.knobs;
+    return f;
+}
+
+std::vector<std::uint8_t> png_bytes(const Rgba8Image& image) {
+    std::vector<std::uint8_t> bytes;
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+            out->insert(out->end(), static_cast<std::uint8_t*>(data), static_cast<std::uint8_t*>(data) + size);
+        },
+        &bytes, static_cast<int>(image.width), static_cast<int>(image.height), 4, image.pixels.data(),
+        static_cast<int>(image.width * 4));
+    return bytes;
+}
+
+}  // namespace
+
+std::string settings_fingerprint(const PathRenderSettings& s) {
+    std::string knobs;
+    for (const auto& [name, value] : s.knobs) knobs += fmt::format("{}={};", name, value);
+    return fmt::format("{} {} {}x{} ss{} levels{} ipd{} knobs[{}]", projection_name(s.projection), stereo_mode_name(s.stereo),
+                       s.width, s.height, s.supersample, s.cone_levels, s.ipd_m, knobs);
+}
+
+std::string frame_image_path(const std::string& dir, int frame) {
+    return (std::filesystem::path(dir) / fmt::format("frame_{:06}.png", frame)).string();
+}
+
+PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath path, PathRenderSettings settings)
+    : path_(std::move(path)), settings_(std::move(settings)) {
+    if (settings_.supersample < 1 || settings_.supersample > 8) throw std::runtime_error("supersampling is 1 to 8");
+    StereoSettings stereo;
+    stereo.ipd_m = settings_.ipd_m;
+    renderer_ = std::make_unique<HeadlessRenderer>(ctx, pack, frame_settings(settings_), stereo);
+}
+
+Rgba8Image PathRenderer::render(int frame) {
+    CameraSample s = path_.sample(frame);
+    renderer_->set_world_scale(s.world_scale);
+    RenderedFrame r = renderer_->render(s.head, s.time, static_cast<std::uint32_t>(frame));
+    std::uint32_t ss = settings_.supersample;
+    switch (settings_.projection) {
+        case Projection::Equirect: return downsample(r.left, ss);
+        case Projection::Ods: return top_bottom(downsample(r.left, ss), downsample(r.right, ss));
+        case Projection::Perspective: break;
+    }
+    return side_by_side(downsample(r.left, ss), downsample(r.right, ss));
+}
+
+PathRunResult run_path(PathRenderer& renderer, const PathRun& run) {
+    std::filesystem::create_directories(run.out_dir);
+    PathRunResult result;
+    auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<ProgressBar> bar;
+    if (run.progress) bar = std::make_unique<ProgressBar>(run.frames.size());
+    for (int f = run.frames.begin; f < run.frames.end; ++f) {
+        std::string image = frame_image_path(run.out_dir, f);
+        bool skip = run.resume && frame_is_done(image, run.job);
+        if (!skip) {
+            auto bytes = png_bytes(renderer.render(f));
+            if (bytes.empty() || !write_frame_atomically(image, bytes, f, run.job))
+                throw std::runtime_error(fmt::format("cannot write {}", image));
+            ++result.rendered;
+        } else {
+            ++result.skipped;
+        }
+        if (bar) bar->advance(skip);
+    }
+    if (bar) bar->finish();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace fg

@@ -1,0 +1,66 @@
+#pragma once
+// Offline rendering of a camera path: one image per frame number, in any projection, written with
+// a verification record so that re-running a range (--resume) skips what is already done. Each
+// frame depends only on its number, so ranges and shards can run anywhere, in any order
+// (docs/scale-out.md).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "camera_path.h"
+#include "frame/headless_renderer.h"
+#include "frame_range.h"
+
+namespace fg {
+
+struct PathRenderSettings {
+    Projection projection = Projection::Equirect;
+    StereoMode stereo = StereoMode::PerEye;   // perspective and equirect; ODS always marches per pixel
+    std::uint32_t width = 512, height = 256;  // output size per eye
+    std::uint32_t supersample = 1;            // samples per output pixel along each axis
+    std::uint32_t cone_levels = 5;
+    double ipd_m = 0.064;
+    std::map<std::string, double> knobs;
+    std::string device;
+};
+
+// Everything that changes the pixels, as text: part of the job fingerprint in each frame record.
+std::string settings_fingerprint(const PathRenderSettings& s);
+// DIR/frame_000042.png
+std::string frame_image_path(const std::string& dir, int frame);
+
+class PathRenderer {
+public:
+    PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath path, PathRenderSettings settings);
+
+    // The output image of one frame: side-by-side eyes (perspective), one panorama (equirect), or
+    // top-bottom panoramas with the left eye on top (ODS).
+    Rgba8Image render(int frame);
+    std::string describe() const { return renderer_->describe(); }
+    const CameraPath& path() const { return path_; }
+    const PathRenderSettings& settings() const { return settings_; }
+
+private:
+    CameraPath path_;
+    PathRenderSettings settings_;
+    std::unique_ptr<HeadlessRenderer> renderer_;
+};
+
+struct PathRun {
+    std::string out_dir;
+    FrameRange frames;
+    std::string job;          // fingerprint of pack, path and settings, kept in every frame record
+    bool resume = false;      // skip frames whose image and record verify
+    bool progress = true;     // the progress bar on stderr
+};
+
+struct PathRunResult {
+    int rendered = 0, skipped = 0;
+    double seconds = 0.0;     // wall time of the whole range
+};
+
+// Throws std::runtime_error if an image cannot be written.
+PathRunResult run_path(PathRenderer& renderer, const PathRun& run);
+
+}  // namespace fg

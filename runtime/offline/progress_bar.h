@@ -1,0 +1,27 @@
+#pragma once
+// Progress of an offline render on stderr: frames done of the total, frames per second and the
+// time left. On a terminal one line redraws itself; in a batch log (Slurm, kubectl logs) each
+// update is its own line, at most one every few seconds.
+#include <chrono>
+#include <cstdio>
+
+namespace fg {
+
+class ProgressBar {
+public:
+    ProgressBar(int total, std::FILE* out = stderr);
+    // One more frame finished; skipped frames (already on disk) do not count towards the speed.
+    void advance(bool skipped);
+    void finish();
+    double frames_per_second() const;
+
+private:
+    void draw(bool force);
+
+    int total_, done_ = 0, rendered_ = 0, skipped_ = 0;
+    std::FILE* out_;
+    bool terminal_;
+    std::chrono::steady_clock::time_point start_, last_draw_;
+};
+
+}  // namespace fg

@@ -1,0 +1,92 @@
+// `fgplay render P.fgpack --path camera.json --frames A:B --out DIR`: a camera path to numbered
+// images, resumable and shardable for job arrays (docs/scale-out.md).
+#include <fmt/format.h>
+
+#include "fgplay_render.h"
+#include "graph/scene_settings.h"
+#include "offline/frame_record.h"
+#include "offline/path_render.h"
+#include "pack/pack_reader.h"
+#include "vk/context.h"
+#include "vk/vulkan_error.h"
+
+namespace fg::fgplay {
+
+namespace {
+// The job's fingerprint: a frame record from another pack, path or settings does not count.
+std::string job_fingerprint(const RenderOptions& o, const PathRenderSettings& s) {
+    std::uint64_t pack = 0, path = 0;
+    hash_file(o.pack, pack);
+    hash_file(o.path, path);
+    return fmt::format("pack {} path {} {}", hex64(pack), hex64(path), settings_fingerprint(s));
+}
+}  // namespace
+
+int render_path(const RenderOptions& o) {
+    Diagnostics diag;
+    auto pack = read_pack_file(o.pack, diag);
+    if (!pack) {
+        fmt::print(stderr, "{}", diag.format(o.pack));
+        return 1;
+    }
+    SceneSettings scene = parse_scene_settings(&pack->manifest.scene, "/scene", diag);
+    auto path = CameraPath::load(o.path, scene.world_scale, diag);
+    if (!path) {
+        fmt::print(stderr, "{}", diag.format(o.path));
+        return 1;
+    }
+    std::string error;
+    auto range = parse_frame_range(o.frame_range, path->frame_count(), error);
+    if (!range) {
+        fmt::print(stderr, "fgplay: {}\n", error);
+        return 2;
+    }
+    if (!o.shard.empty()) {
+        int index = 0, count = 1;
+        if (!parse_shard(o.shard, index, count, error)) {
+            fmt::print(stderr, "fgplay: {}\n", error);
+            return 2;
+        }
+        *range = shard_of(*range, index, count);
+    }
+    PathRenderSettings s;
+    s.projection = o.projection;
+    s.stereo = o.stereo;
+    s.width = o.width;
+    s.height = o.height;
+    s.supersample = o.supersample;
+    s.cone_levels = o.cone_levels;
+    s.ipd_m = o.ipd_m;
+    s.knobs = o.knobs;
+    try {
+        vk::ContextOptions ctx_options;
+        ctx_options.validation = o.validation;
+        ctx_options.device = o.device;
+        ctx_options.require_timestamps = false;
+        vk::Context ctx(ctx_options);
+        PathRenderer renderer(ctx, *pack, *path, s);
+        if (o.describe) fmt::print("{}", renderer.describe());
+        fmt::print("device: {}\n{} frames {}:{} of {} ({:.3g} fps path), {} {}x{} per eye, supersampling {}\n",
+                   ctx.device_name(), range->size(), range->begin, range->end, path->frame_count(), path->fps(),
+                   projection_name(s.projection), s.width, s.height, s.supersample);
+        std::fflush(stdout);
+        PathRun run{o.out, *range, job_fingerprint(o, s), o.resume, o.progress};
+        PathRunResult result = run_path(renderer, run);
+        double fps = result.rendered > 0 ? result.rendered / result.seconds : 0.0;
+        fmt::print("rendered {} frames, skipped {} already done, in {:.1f} s: {:.3f} frames/s, {:.0f} frames/hour\n",
+                   result.rendered, result.skipped, result.seconds, fps, 3600.0 * fps);
+        if (ctx.validation_enabled() && ctx.validation_errors() > 0) {
+            fmt::print(stderr, "{} Vulkan validation errors\n", ctx.validation_errors());
+            return 1;
+        }
+    } catch (const vk::VulkanError& e) {
+        fmt::print(stderr, "fgplay: Vulkan: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "fgplay: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace fg::fgplay

@@ -1,0 +1,227 @@
+// Panoramas for offline renders: equirectangular and omni-directional stereo (ODS) frames trace
+// exactly the rays their formulas promise (the GPU's depths agree with the CPU twin traced through
+// projection_ray), hold no NaN, wrap around their seam, and run only the passes they need.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fmt/format.h>
+#include <numbers>
+#include <set>
+
+#include "frame/accuracy_metrics.h"
+#include "frame/cpu_reference_tracer.h"
+#include "frame/image_output.h"
+#include "offline_scene.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::RuntimeTest;
+
+namespace {
+
+constexpr std::uint32_t kWidth = 128, kHeight = 64;
+// Scene units per metre: a 0.064 m IPD becomes 0.32 units, a few pixels of disparity at the ball.
+constexpr double kWorldScale = 5.0;
+
+struct Panorama {
+    RenderedFrame frame;
+    StereoViews views;
+    std::vector<std::byte> atlas;   // equirect: the centre view's conemarch levels
+};
+
+Panorama render_panorama(const Pack& pack, Projection projection, const HeadPose& head) {
+    FrameSettings fs;
+    fs.width = kWidth;
+    fs.height = kHeight;
+    fs.projection = projection;
+    fs.cone_levels = 4;
+    StereoSettings ss;
+    ss.ipd_m = 0.064;
+    ss.world_scale = kWorldScale;
+    HeadlessRenderer r(test::shared_context(), pack, fs, ss);
+    Panorama out;
+    out.frame = r.render(head, 0.0);
+    out.views = r.views();
+    if (projection == Projection::Equirect) out.atlas = r.executor().download("cone.centre");
+    return out;
+}
+
+HeadPose looking_ahead() { return look_at({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}); }
+
+// The CPU twin through the same per-pixel rays, with the pack's own hit rule (or, strict, a tenth
+// of the epsilon and many more steps: ground truth).
+ReferenceDepth panorama_reference(const test::CpuScene& cpu, const Pack& pack, Projection projection, const View& view,
+                                  double side, double ipd, double half_diagonal, bool strict = false) {
+    ReferenceSettings rs;
+    rs.step_scale = pack.manifest.find_spec("step_scale")->value;
+    rs.epsilon = strict ? 0.05 : pack.manifest.find_spec("epsilon")->value;
+    rs.max_steps = strict ? 4000 : static_cast<int>(pack.manifest.find_spec("max_steps")->value);
+    ReferenceDepth out{view.width, view.height, {}, {}};
+    out.depth.resize(static_cast<std::size_t>(view.width) * view.height);
+    out.steps.resize(out.depth.size());
+    for (std::uint32_t y = 0; y < view.height; ++y)
+        for (std::uint32_t x = 0; x < view.width; ++x) {
+            std::size_t i = static_cast<std::size_t>(y) * view.width + x;
+            Ray ray = projection_ray(projection, view, side, ipd, (x + 0.5) / view.width, (y + 0.5) / view.height);
+            out.depth[i] = reference_trace(*cpu.evaluator, cpu.settings, ray.origin, ray.dir, std::tan(half_diagonal), rs,
+                                           &out.steps[i]);
+        }
+    return out;
+}
+
+// Mean absolute RGB difference between two columns of an image, per row.
+double column_step(const Rgba8Image& img, std::uint32_t a, std::uint32_t b) {
+    double sum = 0.0;
+    for (std::uint32_t y = 0; y < img.height; ++y)
+        for (int c = 0; c < 3; ++c)
+            sum += std::abs(int(img.pixels[(y * img.width + a) * 4 + c]) - int(img.pixels[(y * img.width + b) * 4 + c]));
+    return sum / img.height;
+}
+
+class PanoramaAgainstReference : public RuntimeTest, public ::testing::WithParamInterface<Projection> {};
+
+}  // namespace
+
+TEST_P(PanoramaAgainstReference, depths_agree_with_the_cpu_twin_through_the_same_rays_and_hold_no_nan) {
+    Projection projection = GetParam();
+    Pack pack = test::compile_pack(test::room_graph());
+    auto cpu = test::cpu_scene(pack);
+    // Turned a little and off-centre, so no axis lines up with the image.
+    HeadPose head = look_at({0.1, 0.2, 0.3}, {0.5, 0.1, -1.0});
+    Panorama p = render_panorama(pack, projection, head);
+    int eyes = is_mono(projection) ? 1 : 2;
+    for (int eye = 0; eye < eyes; ++eye) {
+        double side = is_mono(projection) ? 0.0 : eye == 0 ? -1.0 : 1.0;
+        const auto& depth = eye == 0 ? p.frame.depth_left : p.frame.depth_right;
+        const View& view = eye == 0 ? p.views.left : p.views.right;
+        auto ref = panorama_reference(*cpu, pack, projection, view, side, p.views.ipd, p.views.pixel_half_diagonal);
+        DepthComparison c = compare_depths(depth, ref.depth, p.views.pixel_half_diagonal);
+        std::string what = fmt::format("{} eye {}: misclassified {:.3f}% ({} only rendered, {} only reference), depth "
+                                       "error median {:.3f} p95 {:.3f} cone radii",
+                                       projection_name(projection), eye, 100.0 * c.misclassified, c.only_rendered,
+                                       c.only_reference, c.median_error, c.p95_error);
+        SCOPED_TRACE(what);
+        RecordProperty(fmt::format("eye{}", eye), what);
+        EXPECT_EQ(depth.size(), std::size_t{kWidth} * kHeight);
+        EXPECT_EQ(c.not_finite, 0u);
+        // The floor fills the lower half of a panorama.
+        EXPECT_GT(c.both_hit, c.pixels / 3);
+        EXPECT_LE(c.misclassified, 0.005);
+        EXPECT_LE(c.p95_error, pack.manifest.find_spec("epsilon")->value);
+    }
+    if (!is_mono(projection)) EXPECT_NE(p.frame.left.pixels, p.frame.right.pixels) << "the eyes are apart";
+}
+
+INSTANTIATE_TEST_SUITE_P(Projections, PanoramaAgainstReference, ::testing::Values(Projection::Equirect, Projection::Ods),
+                         [](const auto& info) { return std::string(projection_name(info.param)); });
+
+// A coarse cone of an equirectangular level must cover its whole block of pixels, whose rays
+// spread further apart in longitude than in latitude and converge at the poles: every level's
+// bound is still a lower bound of the true hit of every pixel in its block. The Mandelbulb seen
+// from close up fills a third of the sphere with detail.
+TEST_F(RuntimeTest, every_equirect_cone_level_is_a_lower_bound_of_the_hits_in_its_block) {
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    auto cpu = test::cpu_scene(pack);
+    Panorama p = render_panorama(pack, Projection::Equirect, look_at({0.25, 0.55, 1.05}, {0.0, 0.2, 0.0}));
+    const View& view = p.views.centre;
+    auto ref = panorama_reference(*cpu, pack, Projection::Equirect, view, 0.0, 0.0, p.views.pixel_half_diagonal, true);
+    std::uint32_t W = view.width, H = view.height, atlas_w = W + (W + 1) / 2;
+    double cone = std::tan(p.views.pixel_half_diagonal);
+    std::size_t checked = 0, violations = 0;
+    for (std::uint32_t level = 0; level < 4; ++level) {
+        std::uint32_t x0 = level == 0 ? 0 : W, y0 = 0;
+        for (std::uint32_t k = 1; k < level; ++k) y0 += (H + (1u << k) - 1) >> k;
+        for (std::uint32_t y = 0; y < H; ++y)
+            for (std::uint32_t x = 0; x < W; ++x) {
+                double t_ref = ref.depth[static_cast<std::size_t>(y) * W + x];
+                if (t_ref < 0.0) continue;
+                float bound[2];
+                std::size_t at = (static_cast<std::size_t>(y0 + (y >> level)) * atlas_w + x0 + (x >> level)) * 8;
+                std::memcpy(bound, p.atlas.data() + at, 8);
+                ++checked;
+                // The reference stops within 0.05 cone radii of the surface.
+                if (bound[1] > t_ref + 0.1 * cone * t_ref) ++violations;
+            }
+    }
+    EXPECT_GT(checked, 4000u);
+    EXPECT_EQ(violations, 0u) << violations << " of " << checked << " pixel rays start past the surface";
+}
+
+// The first and last columns are neighbours on the sphere, 2 pi / width apart like any two
+// adjacent columns, so the step across the seam must look like an ordinary step between
+// neighbours: no larger than the 90th percentile of the image's own column-to-column steps
+// (edges of objects make the largest ones). The box behind the camera straddles the seam.
+TEST_F(RuntimeTest, an_ods_frame_wraps_around_its_seam) {
+    Pack pack = test::compile_pack(test::room_graph());
+    Panorama p = render_panorama(pack, Projection::Ods, looking_ahead());
+    for (const Rgba8Image* img : {&p.frame.left, &p.frame.right}) {
+        std::vector<double> steps;
+        for (std::uint32_t x = 0; x + 1 < kWidth; ++x) steps.push_back(column_step(*img, x, x + 1));
+        std::sort(steps.begin(), steps.end());
+        double p90 = steps[steps.size() * 9 / 10];
+        double seam = column_step(*img, 0, kWidth - 1);
+        RecordProperty(img == &p.frame.left ? "left" : "right",
+                       fmt::format("seam step {:.2f}, neighbour steps median {:.2f} p90 {:.2f} max {:.2f}", seam,
+                                   steps[steps.size() / 2], p90, steps.back()));
+        EXPECT_LE(seam, p90) << fmt::format("seam step {:.2f}, 90th percentile of neighbour steps {:.2f}", seam, p90);
+        EXPECT_GT(steps.back(), 0.0) << "the image should not be flat";
+    }
+}
+
+// Turning the head half a turn moves the seam to the middle of the image: the frame must be the
+// first one rolled by half its width. Directions and eye positions come out of sin and cos of
+// different angles, so a silhouette pixel may round the other way; nearly all must match exactly.
+TEST_F(RuntimeTest, an_ods_frame_turned_half_a_turn_is_the_same_frame_rolled_by_half_its_width) {
+    Pack pack = test::compile_pack(test::room_graph());
+    HeadPose ahead = looking_ahead();
+    HeadPose behind{ahead.position, glm::angleAxis(std::numbers::pi, glm::dvec3(0.0, 1.0, 0.0)) * ahead.orientation};
+    Panorama a = render_panorama(pack, Projection::Ods, ahead);
+    Panorama b = render_panorama(pack, Projection::Ods, behind);
+    for (int eye = 0; eye < 2; ++eye) {
+        const Rgba8Image& ia = eye == 0 ? a.frame.left : a.frame.right;
+        const Rgba8Image& ib = eye == 0 ? b.frame.left : b.frame.right;
+        std::size_t same = 0, close = 0, total = 0;
+        for (std::uint32_t y = 0; y < kHeight; ++y)
+            for (std::uint32_t x = 0; x < kWidth; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    int va = ia.pixels[(y * kWidth + (x + kWidth / 2) % kWidth) * 4 + c];
+                    int vb = ib.pixels[(y * kWidth + x) * 4 + c];
+                    same += va == vb;
+                    close += std::abs(va - vb) <= 2;
+                    ++total;
+                }
+        RecordProperty(fmt::format("eye{}", eye), fmt::format("{} of {} channels equal, {} within 2", same, total, close));
+        EXPECT_GE(close, total * 99 / 100) << fmt::format("eye {}: only {} of {} channels within 2", eye, close, total);
+    }
+}
+
+TEST_F(RuntimeTest, a_panorama_runs_only_the_passes_its_rays_allow) {
+    Pack pack = test::compile_pack(test::room_graph());
+    auto programs = [&](Projection projection, StereoMode mode) {
+        FrameSettings fs;
+        fs.width = kWidth;
+        fs.height = kHeight;
+        fs.projection = projection;
+        fs.stereo = mode;
+        FrameGraph g = FrameGraph::build(pack.manifest, fs, kWidth, kHeight);
+        std::set<std::string> seen;
+        for (const auto& pass : g.passes()) seen.insert(pass.program + "." + pass.label.substr(pass.label.rfind('.') + 1));
+        return seen;
+    };
+    // ODS moves the eye with every column: no cone from one origin, no centre eye to reproject.
+    for (StereoMode mode : {StereoMode::PerEye, StereoMode::Reproject, StereoMode::Naive})
+        EXPECT_EQ(programs(Projection::Ods, mode),
+                  (std::set<std::string>{"naive.left", "naive.right", "shade.left", "shade.right"}))
+            << stereo_mode_name(mode);
+    // Equirect is one eye at the head's centre; reprojection would need two.
+    auto equirect = programs(Projection::Equirect, StereoMode::Reproject);
+    EXPECT_TRUE(equirect.count("shade.centre"));
+    for (const auto& p : equirect) {
+        EXPECT_EQ(p.find("reproject"), std::string::npos) << p;
+        EXPECT_EQ(p.find("left"), std::string::npos) << p;
+    }
+    EXPECT_EQ(programs(Projection::Equirect, StereoMode::Naive),
+              (std::set<std::string>{"naive.centre", "shade.centre"}));
+}

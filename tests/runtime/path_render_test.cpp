@@ -1,0 +1,125 @@
+// Offline rendering of a camera path: frames depend only on their number, so a range rendered in
+// one run and the same range cut into shards (separate renderers, as separate job-array tasks
+// would be) write identical files; --resume skips exactly the frames on disk that verify.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "offline/frame_record.h"
+#include "offline/path_render.h"
+#include "offline/supersample.h"
+#include "offline_scene.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::RuntimeTest;
+
+namespace {
+
+std::vector<char> file_bytes(const std::filesystem::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+class PathRender : public RuntimeTest {
+protected:
+    void SetUp() override {
+        RuntimeTest::SetUp();
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');
+        dir_ = std::filesystem::path(::testing::TempDir()) / ("fg_path_" + name);
+        std::filesystem::remove_all(dir_);
+        Diagnostics diag;
+        // Four frames at 3 fps over one second: a move forward, a turn to look at the ball, a zoom.
+        auto json = nlohmann::json::parse(test::read_source_file("tests/runtime/data/short_path.json"));
+        path_ = CameraPath::parse(json, 1.0, diag);
+        ASSERT_TRUE(path_) << diag.format();
+        settings_.projection = Projection::Ods;
+        settings_.width = 64;
+        settings_.height = 32;
+    }
+    void TearDown() override {
+        std::filesystem::remove_all(dir_);
+        RuntimeTest::TearDown();
+    }
+    PathRunResult run(const Pack& pack, const std::string& sub, FrameRange frames, bool resume = false) {
+        PathRenderer renderer(test::shared_context(), pack, *path_, settings_);
+        return run_path(renderer, {(dir_ / sub).string(), frames, "test job", resume, false});
+    }
+
+    std::filesystem::path dir_;
+    std::optional<CameraPath> path_;
+    PathRenderSettings settings_;
+};
+
+class PathShards : public PathRender, public ::testing::WithParamInterface<Projection> {};
+
+}  // namespace
+
+// Every projection, the cone-marched ones included; equirect also supersampled.
+TEST_P(PathShards, a_path_rendered_as_one_range_and_as_two_shards_writes_identical_files) {
+    settings_.projection = GetParam();
+    if (settings_.projection == Projection::Equirect) settings_.supersample = 2;
+    if (settings_.projection == Projection::Perspective) settings_.width = 32;
+    Pack pack = test::compile_pack(test::room_graph());
+    ASSERT_EQ(path_->frame_count(), 4);
+    FrameRange all{0, 4};
+    run(pack, "whole", all);
+    // The second shard first: order and process do not matter.
+    run(pack, "shards", shard_of(all, 1, 2));
+    run(pack, "shards", shard_of(all, 0, 2));
+    for (int f = 0; f < 4; ++f) {
+        auto whole = file_bytes(frame_image_path((dir_ / "whole").string(), f));
+        auto shard = file_bytes(frame_image_path((dir_ / "shards").string(), f));
+        ASSERT_FALSE(whole.empty()) << "frame " << f;
+        EXPECT_EQ(whole, shard) << "frame " << f;
+        EXPECT_EQ(file_bytes(frame_record_path(frame_image_path((dir_ / "whole").string(), f))),
+                  file_bytes(frame_record_path(frame_image_path((dir_ / "shards").string(), f))));
+    }
+    // The camera moves: consecutive frames differ.
+    EXPECT_NE(file_bytes(frame_image_path((dir_ / "whole").string(), 0)),
+              file_bytes(frame_image_path((dir_ / "whole").string(), 1)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Projections, PathShards,
+                         ::testing::Values(Projection::Ods, Projection::Equirect, Projection::Perspective),
+                         [](const auto& info) { return std::string(projection_name(info.param)); });
+
+TEST_F(PathRender, resume_skips_verified_frames_and_renders_missing_or_corrupted_ones_again) {
+    Pack pack = test::compile_pack(test::room_graph());
+    FrameRange all{0, 4};
+    auto first = run(pack, "out", all);
+    EXPECT_EQ(first.rendered, 4);
+    auto frame = [&](int f) { return frame_image_path((dir_ / "out").string(), f); };
+    auto good = file_bytes(frame(2));
+    auto again = run(pack, "out", all, true);
+    EXPECT_EQ(again.rendered, 0);
+    EXPECT_EQ(again.skipped, 4);
+    // A flipped byte in frame 2 (a damaged copy) and a lost frame 3.
+    {
+        std::fstream f(frame(2), std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(static_cast<std::streamoff>(good.size() / 2));
+        f.put(static_cast<char>(good[good.size() / 2] ^ 0x40));
+    }
+    std::filesystem::remove(frame(3));
+    auto repaired = run(pack, "out", all, true);
+    EXPECT_EQ(repaired.rendered, 2);
+    EXPECT_EQ(repaired.skipped, 2);
+    EXPECT_EQ(file_bytes(frame(2)), good);
+    // Another job (other pack, path or settings) does not count as done.
+    PathRenderer renderer(test::shared_context(), pack, *path_, settings_);
+    auto other = run_path(renderer, {(dir_ / "out").string(), {0, 1}, "another job", true, false});
+    EXPECT_EQ(other.rendered, 1);
+}
+
+TEST(Supersampling, averages_samples_in_linear_light) {
+    // Two black and two white samples are half the light: sRGB 188, not 128.
+    Rgba8Image img{2, 2, {0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 255}};
+    Rgba8Image out = downsample(img, 2);
+    ASSERT_EQ(out.width, 1u);
+    ASSERT_EQ(out.height, 1u);
+    EXPECT_EQ(out.pixels, (std::vector<std::uint8_t>{188, 188, 188, 255}));
+}
