@@ -97,7 +97,7 @@ int run_bench(const BenchOptions& o) {
     // a cold one the next.
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     std::uint32_t size = o.size ? o.size : (o.quick ? 128 : 512);
-    int frames = o.frames ? o.frames : (o.quick ? 2 : 5);
+    int frames = o.frames ? o.frames : (o.quick ? 2 : 3);
     std::filesystem::create_directories(o.out);
 
     // The pack, compiled here if a graph was given; compile figures for the report.
