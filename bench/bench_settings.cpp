@@ -84,6 +84,7 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     knob("overrelax", {1.2, 1.5});
     knob("tail_after", {8, 16});
     knob("normal_taps", {6});
+    knob("shade_reuse", {1.0, 4.0});
     pixels(true, 0.0);
     for (double fovea : {0.35, 0.5, 0.7}) pixels(false, fovea);
     pixels(true, 0.5);

@@ -11,7 +11,18 @@ layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fg_color;   // H
 #else
 layout(set = 0, binding = 4, rgba8) uniform writeonly image2D fg_color;     // final, tonemapped
 #endif
-layout(push_constant) uniform FgShadePush { int view; int stride; } pc;
+// The other eye's shading and depth, for FG_SHADE_REUSE (bound either way).
+#ifdef FG_HAS_POST
+layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_other_color;
+#else
+layout(set = 0, binding = 5, rgba8) uniform readonly image2D fg_other_color;
+#endif
+layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_other_depth;
+layout(push_constant) uniform FgShadePush {
+    int view;
+    int reuse;           // 1: take the other eye's shading where it sees the same point
+    int stride;
+} pc;
 
 vec3 fg_background(vec3 rd)
 {
@@ -35,6 +46,34 @@ vec3 fg_normal_at(vec3 p, float h)
     return normalize(k.xyy * fg_scene_distance(p + k.xyy * h) + k.yyx * fg_scene_distance(p + k.yyx * h) +
                      k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h) +
                      vec3(1e-20));
+}
+
+// Shading reuse across the eyes: the point p, seen by the other eye, lands on one of its pixels;
+// where that pixel's hit is the same point (depth agrees within FG_SHADE_REUSE cone radii), its
+// colour is taken instead of shading p again. View-dependent terms (rim, SSS) then come from the
+// other eye's direction: the benchmark measures what that costs.
+bool fg_reuse_other_eye(vec3 p, out vec4 color)
+{
+    if (fg_frame.info.z != FG_PROJECTION_PERSPECTIVE) return false;
+    int other = 1 - pc.view;
+    FgView o = fg_frame.views[other];
+    vec3 q = p - o.origin.xyz;
+    float z = dot(q, o.forward.xyz);
+    if (z <= 0.0) return false;
+    vec2 tangent = vec2(dot(q, o.right.xyz), dot(q, o.up.xyz)) / z;
+    vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
+                   (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
+    ivec2 size = ivec2(fg_frame.size.xy);
+    ivec2 at = ivec2(floor(uv * vec2(size)));
+    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
+    // A foveated-away pixel of the other eye has no colour yet: the fovea pass fills it later.
+    if (((at.x | at.y) & 1) != 0 && fg_periphery(other, at) >= 1.0) return false;
+    if (fg_outside_lens(other, at)) return false;
+    float t_other = imageLoad(fg_other_depth, at).x;
+    float seen = length(q);
+    if (t_other < 0.0 || abs(t_other - seen) > FG_SHADE_REUSE * fg_cone_tan(0) * seen) return false;
+    color = imageLoad(fg_other_color, at);
+    return true;
 }
 
 vec3 fg_tonemap(vec3 c)
@@ -62,6 +101,11 @@ void main()
         color = fg_background(rd);
     } else {
         vec3 p = ro + rd * t;
+        vec4 reused;
+        if (FG_SHADE_REUSE > 0.0 && pc.reuse != 0 && fg_reuse_other_eye(p, reused)) {
+            imageStore(fg_color, pixel, reused);
+            return;
+        }
         vec3 n = vec3(0.0, 1.0, 0.0);
 #ifdef FG_HAS_NORMALS
         // The tap distance follows the pixel's footprint, so normals are as sharp as the image.
