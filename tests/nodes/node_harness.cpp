@@ -184,8 +184,10 @@ json graph_around(const NodeDefinition& def, std::optional<ValueType> generic, b
             }
             inputs[port.name] = id;
         } else if (t == ValueType::Vec3) {
-            nodes.push_back({{"id", "point"}, {"type", "xform.translate"}, {"inputs", {{"offset", {0.1, 0.2, 0.3}}}}});
-            inputs[port.name] = "point.p";
+            std::string id = "point_" + port.name;
+            double k = static_cast<double>(nodes.size());
+            nodes.push_back({{"id", id}, {"type", "xform.translate"}, {"inputs", {{"offset", {0.1 * k, 0.2, 0.3}}}}});
+            inputs[port.name] = id + ".p";
         } else {
             std::string name = "in_" + port.name;
             params[name] = param_for(t, port);
