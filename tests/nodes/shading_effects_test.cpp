@@ -4,6 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <sstream>
+
 #include "compiler.h"
 
 namespace {
@@ -73,6 +76,19 @@ TEST(ShadingEffects, orbit_trap_readers_and_the_palette_blend_add_trap_and_palet
     auto c = compile(g);
     EXPECT_TRUE(has(c.effects, "trap"));
     EXPECT_TRUE(has(c.effects, "palette"));
+}
+
+TEST(ShadingEffects, the_node_showcase_compiles_with_its_shading_effects_and_a_raised_lipschitz_bound) {
+    std::ifstream in(std::string(FG_SOURCE_DIR) + "/graphs/examples/node_showcase.json");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    fg::Diagnostics diag;
+    auto r = fg::compile_graph(ss.str(), fg::NodeLibrary::builtin(), {}, diag);
+    ASSERT_TRUE(r) << diag.format();
+    auto effects = r->manifest.effects.names();
+    for (const char* e : {"sss", "rim", "emission", "palette"}) EXPECT_TRUE(has(effects, e)) << e;
+    // The twist and the displacement stretch space: the march must step more carefully.
+    EXPECT_GT(r->manifest.lipschitz_bound, 1.5);
 }
 
 }  // namespace
