@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fmt/format.h>
 
 #include "compiler.h"
@@ -102,6 +103,7 @@ TEST_P(NodeTwin, gpu_and_cpu_twin_agree_at_random_points) {
         EXPECT_EQ(c.non_finite, 0u) << "the CPU twin produced NaN or Inf inside the declared ranges";
         // Chaotic iterations: float and double orbits may part near the surface at a few points.
         const std::size_t allowed = fg::test::is_iterated(def) ? kPoints / 20 : 0;
+        if (allowed) std::printf("%s: %zu of %zu points beyond 1 %%\n", def.type.c_str(), c.mismatches, kPoints);
         EXPECT_LE(c.mismatches, allowed) << c.mismatches << " of " << kPoints << " points disagree; first " << c.first;
     }
     EXPECT_EQ(fg::test::GpuNodeEvaluator::shared().context().validation_errors(), errors_before);
