@@ -17,6 +17,9 @@ namespace glsl {
 double fg_scene_distance(vec3 p) { return tl_shading ? tl_shading->distance(p) : 1e30; }
 }  // namespace glsl
 
+CpuShadingScope::CpuShadingScope(const CpuEvaluator& scene) : previous_(tl_shading) { tl_shading = &scene; }
+CpuShadingScope::~CpuShadingScope() { tl_shading = previous_; }
+
 CpuEvaluator::CpuEvaluator(const IrGraph& ir) : ir_(&ir) {}
 
 std::optional<CpuEvaluator> CpuEvaluator::create(const IrGraph& ir, Diagnostics& diag) {

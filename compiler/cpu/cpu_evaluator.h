@@ -75,4 +75,17 @@ private:
     mutable std::uint64_t evaluations_ = 0;
 };
 
+// Makes `scene` the distance that shade-context node bodies call (fg_scene_distance) for one scope,
+// so a test can call such a body directly, as the GPU does inside the shade pass.
+class CpuShadingScope {
+public:
+    explicit CpuShadingScope(const CpuEvaluator& scene);
+    ~CpuShadingScope();
+    CpuShadingScope(const CpuShadingScope&) = delete;
+    CpuShadingScope& operator=(const CpuShadingScope&) = delete;
+
+private:
+    const CpuEvaluator* previous_;
+};
+
 }  // namespace fg

@@ -117,8 +117,23 @@ void main()
 #else
         float diffuse = max(dot(n, fg_scene.light_dir.xyz), 0.0);
 #endif
-        color = s.albedo * (fg_scene.ambient.rgb * s.ao + fg_scene.light_color.rgb * diffuse) +
-                s.sss * fg_scene.sss_color.rgb * s.albedo + s.rim * fg_scene.rim_color.rgb + s.emission;
+        // Each optional term exists only when the pack lists its effect: a scene without SSS, rim or
+        // emission carries no code for them.
+#ifdef FG_HAS_AO
+        float ao = s.ao;
+#else
+        float ao = 1.0;
+#endif
+        color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse);
+#ifdef FG_HAS_SSS
+        color += s.sss * fg_scene.sss_color.rgb * s.albedo;
+#endif
+#ifdef FG_HAS_RIM
+        color += s.rim * fg_scene.rim_color.rgb;
+#endif
+#ifdef FG_HAS_EMISSION
+        color += s.emission;
+#endif
     }
 #ifdef FG_HAS_POST
     imageStore(fg_color, pixel, vec4(color, 1.0));

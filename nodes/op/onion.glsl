@@ -1,0 +1,4 @@
+void fg_op_onion(float d, float thickness, OUT(float) distance)
+{
+    distance = abs(d) - thickness;
+}
