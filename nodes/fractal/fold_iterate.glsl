@@ -1,4 +1,4 @@
-void fg_fractal_fold_iterate(vec3 p, bool mirror, float box_limit, float min_radius, float fixed_radius, vec3 axis,
+void fg_fractal_fold_iterate(vec3 p, bool mirror, bool sort, float box_limit, float min_radius, float fixed_radius, vec3 axis,
                              float angle_deg, float scale, vec3 offset, float add_point, float radius, int iterations,
                              float bailout, float bias, OUT(float) distance, OUT(vec4) trap)
 {
@@ -16,6 +16,12 @@ void fg_fractal_fold_iterate(vec3 p, bool mirror, float box_limit, float min_rad
         if (r2 > bail2) break;
         // Each stage is a fold (a piecewise isometry) or a uniform scale, so dr tracks them exactly.
         if (mirror) z = abs(z);
+        // Sorting the coordinates (x >= y >= z) is three plane reflections: the octahedral fold.
+        if (sort) {
+            if (z.x < z.y) z = vec3(z.y, z.x, z.z);
+            if (z.x < z.z) z = vec3(z.z, z.y, z.x);
+            if (z.y < z.z) z = vec3(z.x, z.z, z.y);
+        }
         if (box_limit > 0.0) z = clamp(z, -box_limit, box_limit) * 2.0 - z;
         float k = 1.0;
         if (fixed_r2 > min_r2) {
