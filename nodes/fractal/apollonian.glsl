@@ -11,7 +11,8 @@ void fg_fractal_apollonian(vec3 p, float size, float inversion, float thickness,
         float r2 = max(dot(z, z), 1e-12);
         float k = inversion / r2;
         z = z * k;
-        dr = fg_conservative_dr(dr, bias, dr * k);
+        // Capped below float32's overflow: an infinite dr would make bias * dr NaN at bias 0.
+        dr = min(fg_conservative_dr(dr, bias, dr * k), 1e30);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }
     // The packing is the limit of the sheet |y| < thickness; 0.25 keeps the estimate under the true distance.

@@ -31,7 +31,8 @@ void fg_fractal_fold_iterate(vec3 p, bool mirror, bool sort, float box_limit, fl
         }
         z = fg_rotate_axis(z * k, a, angle);
         z = z * scale + offset + p * add_point;
-        dr = fg_conservative_dr(dr, bias, dr * k * abs(scale) + abs(add_point));
+        // Capped below float32's overflow: an infinite dr would make bias * dr NaN at bias 0.
+        dr = min(fg_conservative_dr(dr, bias, dr * k * abs(scale) + abs(add_point)), 1e30);
         r2 = dot(z, z);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }

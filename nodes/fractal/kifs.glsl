@@ -18,7 +18,8 @@ void fg_fractal_kifs(vec3 p, float scale, vec3 offset, vec3 axis, float pre_angl
         if (z.y + z.z < 0.0) z = vec3(z.x, -z.z, -z.y);
         z = fg_rotate_axis(z, a, post);
         z = z * scale - offset * (scale - 1.0);
-        dr = fg_conservative_dr(dr, bias, dr * abs(scale));
+        // Capped below float32's overflow: an infinite dr would make bias * dr NaN at bias 0.
+        dr = min(fg_conservative_dr(dr, bias, dr * abs(scale)), 1e30);
         r2 = dot(z, z);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }

@@ -18,7 +18,8 @@ void fg_fractal_mandelbox(vec3 p, float scale, float min_radius, float fixed_rad
         if (r2 < min_r2) k = fixed_r2 / min_r2;
         else if (r2 < fixed_r2) k = fixed_r2 / r2;
         z = z * (k * scale) + p;
-        dr = fg_conservative_dr(dr, bias, dr * k * abs(scale) + 1.0);
+        // Capped below float32's overflow: an infinite dr would make bias * dr NaN at bias 0.
+        dr = min(fg_conservative_dr(dr, bias, dr * k * abs(scale) + 1.0), 1e30);
         r2 = dot(z, z);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }

@@ -19,7 +19,8 @@ void fg_fractal_menger(vec3 p, float scale, vec3 offset, vec3 axis, float angle_
         // Scale about the corner cube; the z fold brings the edge cubes back (Knighty's Menger IFS).
         z = z * scale - offset * (scale - 1.0);
         if (z.z < -0.5 * offset.z * (scale - 1.0)) z.z += offset.z * (scale - 1.0);
-        dr = fg_conservative_dr(dr, bias, dr * abs(scale));
+        // Capped below float32's overflow: an infinite dr would make bias * dr NaN at bias 0.
+        dr = min(fg_conservative_dr(dr, bias, dr * abs(scale)), 1e30);
         r2 = dot(z, z);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }
