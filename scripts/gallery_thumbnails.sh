@@ -37,13 +37,22 @@ out = ["# The gallery", "",
        "The thumbnails are the left eye of the scene's start view, rendered headless on lavapipe by",
        "`scripts/gallery_thumbnails.sh` (do not edit this page by hand: that script writes it).",
        "Every scene is also rendered by the test suite (`tests/runtime/gallery_test.cpp`) and checked against the CPU twin.", ""]
-for path in sorted((root / "graphs" / "gallery").glob("*.json")):
-    g = json.loads(path.read_text())
+graphs = [(path, json.loads(path.read_text())) for path in sorted((root / "graphs" / "gallery").glob("*.json"))]
+# A grid of thumbnails first (users look rather than read), then what each scene is made of.
+columns = 4
+for i in range(0, len(graphs), columns):
+    row = graphs[i:i + columns]
+    cells = [f"[![{g['name']}](images/gallery/{p.stem}.png)](#{p.stem})<br>{g['name']}" for p, g in row]
+    cells += [""] * (columns - len(row))
+    if i == 0:
+        out += ["| " + " | ".join([""] * columns) + " |", "|" + "---|" * columns]
+    out.append("| " + " | ".join(cells) + " |")
+out.append("")
+for path, g in graphs:
     types = sorted({n["type"] for n in g["nodes"] if n["type"].startswith(("fractal.", "prim.", "op."))})
     scene = g.get("scene", {})
     extras = [k for k in ("fog", "glow", "vignette") if k in scene]
-    out += [f"## {g['name']}", "",
-            f"![{g['name']}](images/gallery/{path.stem}.png)", "",
+    out += [f'<a id="{path.stem}"></a>', "", f"## {g['name']}", "",
             g.get("description", ""), "",
             f"`graphs/gallery/{path.name}` · nodes: {', '.join('`%s`' % t for t in types)}"
             + (f" · effects: {', '.join(extras)}" if extras else " · no fog or glow"), ""]
