@@ -146,3 +146,4 @@ TEST(FractalNodes, the_julia_estimate_never_exceeds_the_distance_to_its_bounding
         EXPECT_LE(evaluate(*def, default_inputs(*def, p)).distance, r - 2.0 + 1e-12) << r;
     }
 }
+
