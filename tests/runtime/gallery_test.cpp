@@ -28,7 +28,7 @@ std::vector<std::string> gallery_scenes() {
 }
 
 // Scenes that surround the camera: every ray may hit.
-const std::set<std::string> kImmersive{"apollonian", "menger_twisted"};
+const std::set<std::string> kImmersive{"apollonian", "kleinian", "menger_twisted"};
 
 class GalleryScene : public RuntimeTest, public ::testing::WithParamInterface<std::string> {};
 
