@@ -147,3 +147,25 @@ TEST(FractalNodes, the_julia_estimate_never_exceeds_the_distance_to_its_bounding
     }
 }
 
+
+TEST(FractalNodes, fold_iterate_with_the_mandelbox_stages_is_the_mandelbox) {
+    const auto* box = NodeLibrary::builtin().find("fractal.mandelbox");
+    const auto* generic = NodeLibrary::builtin().find("fractal.fold_iterate");
+    ASSERT_TRUE(box && generic);
+    std::srand(3);
+    auto rnd = [] { return 4.0 * std::rand() / RAND_MAX - 2.0; };
+    for (int i = 0; i < 500; ++i) {
+        glm::dvec3 p(rnd(), rnd(), rnd());
+        auto a = default_inputs(*box, p);
+        a[input_index(*box, "scale")] = CpuValue::of(-1.5);
+        auto b = default_inputs(*generic, p);
+        b[input_index(*generic, "box_limit")] = CpuValue::of(1.0);
+        b[input_index(*generic, "min_radius")] = CpuValue::of(0.5);
+        b[input_index(*generic, "fixed_radius")] = CpuValue::of(1.0);
+        b[input_index(*generic, "scale")] = CpuValue::of(-1.5);
+        b[input_index(*generic, "add_point")] = CpuValue::of(1.0);
+        b[input_index(*generic, "iterations")] = CpuValue::of(12);
+        Result ra = evaluate(*box, a), rb = evaluate(*generic, b);
+        ASSERT_NEAR(ra.distance, rb.distance, 1e-9 * (1.0 + std::abs(ra.distance))) << p.x << " " << p.y << " " << p.z;
+    }
+}
