@@ -18,4 +18,10 @@ void fg_fractal_mandelbulb(vec3 p, float power, int iterations, float bailout, f
     }
     // log(r) * r tends to 0 at r = 0: the max keeps log finite there.
     distance = 0.5 * log(max(r, FG_TINY)) * r / dr;
+    // Far away the estimate grows like r log r, faster than the true distance. Orbits that leave
+    // |z| = 2 escape (for power >= 2), so the bulb lies inside that ball and |p| - 2 bounds the
+    // distance from below. Beyond twice that radius the smaller of the two never oversteps; nearer
+    // in the cap would put a false surface on the ball, and the estimate is good there.
+    float reach = length(p) - 2.0;
+    if (reach > 2.0) distance = min(distance, reach);
 }
