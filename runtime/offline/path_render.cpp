@@ -23,6 +23,9 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     f.projection = s.projection;
     f.cone_levels = s.cone_levels;
     f.knobs = s.knobs;
+    // Offline frames are for every part of the image: no lens mask, no foveation.
+    f.lens_mask = false;
+    f.foveation = 0.0;
     return f;
 }
 
