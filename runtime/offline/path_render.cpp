@@ -23,6 +23,7 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     f.projection = s.projection;
     f.cone_levels = s.cone_levels;
     f.knobs = s.knobs;
+    f.count_evaluations = s.count_evaluations;
     // Offline frames are for every part of the image: no lens mask, no foveation.
     f.lens_mask = false;
     f.foveation = 0.0;
@@ -46,6 +47,7 @@ std::vector<std::uint8_t> png_bytes(const Rgba8Image& image) {
 std::string settings_fingerprint(const PathRenderSettings& s) {
     std::string knobs;
     for (const auto& [name, value] : s.knobs) knobs += fmt::format("{}={};", name, value);
+    // count_evaluations is left out: it changes the work counted, not the pixels.
     return fmt::format("{} {} {}x{} ss{} levels{} ipd{} knobs[{}]", projection_name(s.projection), stereo_mode_name(s.stereo),
                        s.width, s.height, s.supersample, s.cone_levels, s.ipd_m, knobs);
 }
@@ -66,6 +68,11 @@ Rgba8Image PathRenderer::render(int frame) {
     CameraSample s = path_.sample(frame);
     renderer_->set_world_scale(s.world_scale);
     RenderedFrame r = renderer_->render(s.head, s.time, static_cast<std::uint32_t>(frame));
+    std::uint64_t evaluations = 0;
+    for (const auto& [_, n] : r.stats.evaluations) evaluations += n;
+    double samples = (is_mono(settings_.projection) ? 1.0 : 2.0) * settings_.width * settings_.height *
+                     settings_.supersample * settings_.supersample;
+    last_evaluations_ = static_cast<double>(evaluations) / samples;
     std::uint32_t ss = settings_.supersample;
     switch (settings_.projection) {
         case Projection::Equirect: return downsample(r.left, ss);
@@ -89,12 +96,14 @@ PathRunResult run_path(PathRenderer& renderer, const PathRun& run) {
             if (bytes.empty() || !write_frame_atomically(image, bytes, f, run.job))
                 throw std::runtime_error(fmt::format("cannot write {}", image));
             ++result.rendered;
+            result.evaluations_per_sample += renderer.last_evaluations_per_sample();
         } else {
             ++result.skipped;
         }
         if (bar) bar->advance(skip);
     }
     if (bar) bar->finish();
+    if (result.rendered > 0) result.evaluations_per_sample /= result.rendered;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
