@@ -88,21 +88,17 @@ void require_pass(const PackManifest& manifest, const char* program) {
 }
 
 // Panoramas run only what their rays allow. Equirect has one eye at the head's centre: the centre
-// view, marched as the stereo mode says (reprojection needs two eyes, so it cone-marches). ODS
-// moves the origin with every column, so a coarse level's cone from one origin bounds nothing and
-// there is no centre eye to reproject from: each eye is sphere traced per pixel.
+// view. ODS moves each eye with every column, so there is no centre eye to reproject from: each
+// eye is cone-marched on its own, its cones widened by how far the eyes of a block sit apart
+// (fg_origin_spread). Reprojection asked for becomes per-eye cone marching; naive stays naive.
 void add_panorama_passes(FrameGraph& g, const PackManifest& manifest) {
-    std::vector<int> views;
-    if (is_mono(g.settings.projection)) {
-        views = {kCentreView};
-        bool naive = g.settings.stereo == StereoMode::Naive;
-        require_pass(manifest, naive ? "naive" : "conemarch");
-        if (naive) add_naive_passes(g, kCentreView);
-        else add_conemarch_passes(g, kCentreView);
-    } else {
-        require_pass(manifest, "naive");
-        views = {kLeftView, kRightView};
-        for (int eye : views) add_naive_passes(g, eye);
+    std::vector<int> views = is_mono(g.settings.projection) ? std::vector<int>{kCentreView}
+                                                             : std::vector<int>{kLeftView, kRightView};
+    bool naive = g.settings.stereo == StereoMode::Naive;
+    require_pass(manifest, naive ? "naive" : "conemarch");
+    for (int view : views) {
+        if (naive) add_naive_passes(g, view);
+        else add_conemarch_passes(g, view);
     }
     for (int view : views) add_shade_pass(g, view);
     if (g.has_post)
@@ -176,10 +172,9 @@ std::string FrameGraph::describe() const {
                                       stereo_mode_name(settings.stereo), width, height, settings.cone_levels)
                         : fmt::format("frame graph: {} panorama, {}x{} per eye, {}\n", projection_name(settings.projection),
                                       width, height,
-                                      settings.projection == Projection::Ods ? "per-pixel eyes: naive marching"
-                                      : settings.stereo == StereoMode::Naive
-                                          ? "naive marching"
-                                          : fmt::format("{} cone levels", settings.cone_levels));
+                                      settings.stereo == StereoMode::Naive
+                                          ? std::string("naive marching")
+                                          : fmt::format("{} cone levels per view", settings.cone_levels));
     s += fmt::format("pixels: lens mask {}, foveation {}\n", settings.lens_mask ? "on" : "off",
                      settings.foveation > 0.0 ? fmt::format("fovea radius {:g}, blend {:g}", settings.foveation,
                                                             settings.foveation_blend)

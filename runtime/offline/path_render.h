@@ -22,7 +22,7 @@ struct PathRenderSettings {
     std::uint32_t cone_levels = 5;
     double ipd_m = 0.064;
     std::map<std::string, double> knobs;
-    std::string device;
+    bool count_evaluations = false;           // SDF evaluations per rendered sample, for cost estimates
 };
 
 // Everything that changes the pixels, as text: part of the job fingerprint in each frame record.
@@ -37,6 +37,8 @@ public:
     // The output image of one frame: side-by-side eyes (perspective), one panorama (equirect), or
     // top-bottom panoramas with the left eye on top (ODS).
     Rgba8Image render(int frame);
+    // SDF evaluations per rendered sample (supersamples count) of the last frame, with counting on.
+    double last_evaluations_per_sample() const { return last_evaluations_; }
     std::string describe() const { return renderer_->describe(); }
     const CameraPath& path() const { return path_; }
     const PathRenderSettings& settings() const { return settings_; }
@@ -45,6 +47,7 @@ private:
     CameraPath path_;
     PathRenderSettings settings_;
     std::unique_ptr<HeadlessRenderer> renderer_;
+    double last_evaluations_ = 0.0;
 };
 
 struct PathRun {
@@ -58,6 +61,7 @@ struct PathRun {
 struct PathRunResult {
     int rendered = 0, skipped = 0;
     double seconds = 0.0;     // wall time of the whole range
+    double evaluations_per_sample = 0.0;   // mean over the rendered frames (with counting on)
 };
 
 // Throws std::runtime_error if an image cannot be written.

@@ -58,6 +58,7 @@ int render_path(const RenderOptions& o) {
     s.cone_levels = o.cone_levels;
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;
+    s.count_evaluations = o.count;
     try {
         vk::ContextOptions ctx_options;
         ctx_options.validation = o.validation;
@@ -75,6 +76,8 @@ int render_path(const RenderOptions& o) {
         double fps = result.rendered > 0 ? result.rendered / result.seconds : 0.0;
         fmt::print("rendered {} frames, skipped {} already done, in {:.1f} s: {:.3f} frames/s, {:.0f} frames/hour\n",
                    result.rendered, result.skipped, result.seconds, fps, 3600.0 * fps);
+        if (s.count_evaluations && result.rendered > 0)
+            fmt::print("SDF evaluations per sample: {:.2f} (mean over the rendered frames)\n", result.evaluations_per_sample);
         if (ctx.validation_enabled() && ctx.validation_errors() > 0) {
             fmt::print(stderr, "{} Vulkan validation errors\n", ctx.validation_errors());
             return 1;

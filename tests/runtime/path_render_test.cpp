@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include "offline/frame_record.h"
 #include "offline/path_render.h"
+#include "offline/progress_bar.h"
 #include "offline/supersample.h"
 #include "offline_scene.h"
 #include "runtime_test_support.h"
@@ -122,4 +124,25 @@ TEST(Supersampling, averages_samples_in_linear_light) {
     ASSERT_EQ(out.width, 1u);
     ASSERT_EQ(out.height, 1u);
     EXPECT_EQ(out.pixels, (std::vector<std::uint8_t>{188, 188, 188, 255}));
+}
+
+TEST(ProgressBar, a_batch_log_gets_lines_with_frames_done_speed_and_time_left) {
+    std::FILE* log = std::tmpfile();
+    ASSERT_NE(log, nullptr);
+    {
+        ProgressBar bar(3, log);
+        bar.advance(true);
+        bar.advance(false);
+        bar.advance(false);
+        bar.finish();
+    }
+    std::rewind(log);
+    std::string text;
+    for (int c; (c = std::fgetc(log)) != EOF;) text += static_cast<char>(c);
+    std::fclose(log);
+    // Not a terminal: whole lines, no carriage returns, the last one complete.
+    EXPECT_EQ(text.find('\r'), std::string::npos) << text;
+    EXPECT_NE(text.find("0/3 frames"), std::string::npos) << text;
+    EXPECT_NE(text.find("[##############################] 3/3 frames"), std::string::npos) << text;
+    EXPECT_NE(text.find("fps, 0:00 left (1 already done)"), std::string::npos) << text;
 }

@@ -81,11 +81,12 @@ vec3 fg_ray_origin(int view, vec2 uv)
 // The interval [near, far] of distances along a ray where it can meet the scene bounds (a sphere),
 // clipped to the far limit. With cone_tan > 0 the interval covers every ray of the cone of that
 // half-angle around rd: the cone must point at the sphere, and any point of the sphere is between
-// |c - ro| - r and |c - ro| + r from the origin. Empty when near > far.
-vec2 fg_bounds_interval(vec3 ro, vec3 rd, float cone_tan)
+// |c - ro| - r and |c - ro| + r from the origin. Empty when near > far. With spread > 0 it also
+// covers rays starting up to that far from ro (fg_origin_spread): the sphere grows by as much.
+vec2 fg_bounds_interval_spread(vec3 ro, vec3 rd, float cone_tan, float spread)
 {
     vec3 oc = fg_scene.bounds.xyz - ro;
-    float radius = fg_scene.bounds.w;
+    float radius = fg_scene.bounds.w + spread;
     float far = fg_scene.misc.y;
     if (cone_tan > 0.0) {
         float dist = length(oc);
@@ -102,6 +103,11 @@ vec2 fg_bounds_interval(vec3 ro, vec3 rd, float cone_tan)
     return vec2(max(b - h, 0.0), min(b + h, far));
 }
 
+vec2 fg_bounds_interval(vec3 ro, vec3 rd, float cone_tan)
+{
+    return fg_bounds_interval_spread(ro, rd, cone_tan, 0.0);
+}
+
 // tan of the half-angle of the cone through a pixel 2^level full-resolution pixels wide. The
 // half-diagonal in the tangent plane bounds the angle from above, so the cone covers the pixel.
 float fg_cone_tan(int level)
@@ -112,6 +118,15 @@ float fg_cone_tan(int level)
 ivec2 fg_view_size(int view)
 {
     return ivec2(view == 2 ? fg_frame.size.zw : fg_frame.size.xy);
+}
+
+// How far the eyes of a conemarch block 2^level columns wide sit from the eye of its centre
+// column: 0 but in ODS, where the eye moves along the IPD circle by at most the arc of half the
+// block's longitude. A cone whose radius grows by this much covers the rays of every eye.
+float fg_origin_spread(int view, int level)
+{
+    if (fg_frame.info.z != FG_PROJECTION_ODS || view == 2) return 0.0;
+    return 0.5 * fg_frame.time.z * 3.14159265 * float(1 << level) / float(fg_view_size(view).x);
 }
 
 // Conemarch levels live in one atlas image per view: level 0 at the origin, level k >= 1 stacked in

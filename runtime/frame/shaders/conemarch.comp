@@ -56,7 +56,8 @@ void main()
     }
     vec3 ro = fg_ray_origin(pc.view, centre / vec2(full));
     vec3 rd = fg_ray_dir(pc.view, centre / vec2(full));
-    float parent = fg_bounds_interval(ro, rd, fg_cone_tan(pc.level)).x;
+    float spread = fg_origin_spread(pc.view, pc.level);
+    float parent = fg_bounds_interval_spread(ro, rd, fg_cone_tan(pc.level), spread).x;
     if (pc.top == 0) {
         ivec4 up = fg_level_rect(pc.level + 1, full);
         parent = imageLoad(fg_levels, up.xy + pixel / 2).y;
@@ -66,13 +67,13 @@ void main()
     if (pc.level > 0) {
         // Coarse level: advance while the whole cone is provably empty.
         float cone = fg_cone_tan(pc.level);
-        vec2 range = fg_bounds_interval(ro, rd, cone);
+        vec2 range = fg_bounds_interval_spread(ro, rd, cone, spread);
         float t = max(parent, range.x);
         bool touched = false;
         for (int i = 0; i < FG_CONE_STEPS && t <= range.y; ++i) {
             float d = fg_scene_distance(ro + rd * t) * FG_STEP_SCALE;
             evaluations++;
-            float radius = cone * t;
+            float radius = cone * t + spread;
             // Stepping approaches d = radius only geometrically: stop a little before it.
             if (d <= FG_CONE_STOP * radius) {
                 touched = true;
