@@ -1,6 +1,8 @@
 #include "desktop/desktop_viewer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -10,6 +12,8 @@
 #include "desktop/fly_camera.h"
 #include "desktop/pack_source.h"
 #include "desktop/window_presenter.h"
+#include "locomotion/collision_witness.h"
+#include "locomotion/probed_flight.h"
 #include "graph/scene_settings.h"
 #include "image_output.h"
 #include "vk/vulkan_error.h"
@@ -81,13 +85,19 @@ int view(const ViewOptions& o) {
         fmt::print("fgplay view: {} on {} ({:.0f} ms to load, {:.0f} ms for pipelines)\n", o.path, ctx.device_name(),
                    playing.compile_ms, playing.pipelines_ms);
         FlyCamera camera(look_at(scene.camera.position, scene.camera.target, scene.camera.up));
+        auto make_flight = [&] {
+            return std::make_unique<ProbedFlight>(ctx, *playing.pack, locomotion_settings(scene.locomotion), scene.world_scale);
+        };
+        std::unique_ptr<ProbedFlight> flight = make_flight();
+        std::unique_ptr<CollisionWitness> witness;
+        if (o.check_collisions) witness = std::make_unique<CollisionWitness>(*playing.pack);
 
         Input input;
         glfwSetWindowUserPointer(presenter.window(), &input);
         glfwSetScrollCallback(presenter.window(), on_scroll);
         glfwSetKeyCallback(presenter.window(), on_key);
         bool side_by_side = o.side_by_side;
-        double speed = 0.5 * scene.world_scale;   // scene units per second
+        double throttle = 1.0;   // the scroll wheel's share of the distance-proportional speed
         double last_x = 0.0, last_y = 0.0;
         glfwGetCursorPos(presenter.window(), &last_x, &last_y);
         auto last = std::chrono::steady_clock::now();
@@ -104,20 +114,30 @@ int view(const ViewOptions& o) {
             if (glfwGetMouseButton(presenter.window(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) camera.look(x - last_x, y - last_y);
             last_x = x;
             last_y = y;
-            speed *= std::pow(1.25, input.scroll);
+            throttle = std::clamp(throttle * std::pow(1.25, input.scroll), 0.01, 100.0);
             input.scroll = 0.0;
             if (input.toggle_stereo) side_by_side = !side_by_side;
             input.toggle_stereo = false;
             auto key = [&](int k) { return glfwGetKey(presenter.window(), k) == GLFW_PRESS ? 1.0 : 0.0; };
             double fwd = key(GLFW_KEY_W) - key(GLFW_KEY_S), right = key(GLFW_KEY_D) - key(GLFW_KEY_A), up = key(GLFW_KEY_E) - key(GLFW_KEY_Q);
-            camera.fly(fwd, right, up, speed * dt);
-            if (o.autopilot > 0.0) camera.fly(1.0, 0.0, 0.0, o.autopilot);
+            glm::dmat3 basis = glm::mat3_cast(camera.pose().orientation);
+            glm::dvec3 dir = fwd * -basis[2] + right * basis[0] + up * glm::dvec3(0.0, 1.0, 0.0);
+            double thrust = glm::length(dir) > 0.0 ? throttle : 0.0;
+            if (o.autopilot > 0.0) {
+                dir = -basis[2];
+                thrust = o.autopilot;
+            }
+            if (glm::length(dir) > 0.0) dir = glm::normalize(dir);
+            // Tests fly at a fixed 90 Hz so that runs repeat; people fly in real time.
+            camera.set_position(flight->update(camera.pose().position, dir, thrust, o.frames > 0 ? 1.0 / 90.0 : dt));
+            if (witness) witness->observe(camera.pose().position);
 
             std::string error;
             if (auto fresh = source.poll(error)) {
                 ctx.wait_idle();
                 playing = std::move(*fresh);
                 scene = scene_of(*playing.pack);
+                flight = make_flight();
                 status = fmt::format("reloaded {} in {:.0f} ms + {:.0f} ms pipelines", playing.pack->manifest.name, playing.compile_ms,
                                      playing.pipelines_ms);
                 fmt::print("fgplay view: {}\n", status);
@@ -138,8 +158,9 @@ int view(const ViewOptions& o) {
             presenter.present(playing.executor->image("final.left"),
                               side_by_side ? &playing.executor->image("final.right") : nullptr,
                               last_frame && !o.screenshot.empty() ? &shot : nullptr);
-            std::string title = fmt::format("fgplay view - {} - {} - {}{}{}", playing.pack->manifest.name,
+            std::string title = fmt::format("fgplay view - {} - {} - {} - clearance {:.3g}{}{}", playing.pack->manifest.name,
                                             side_by_side ? "side by side" : "left eye", pass_times(stats),
+                                            flight->locomotion().guaranteed_clearance(camera.pose().position),
                                             source.compiling() ? " - compiling" : "", status.empty() ? "" : " - " + status);
             presenter.set_title(title);
             if (frames == 1 || last_frame) {
@@ -151,7 +172,9 @@ int view(const ViewOptions& o) {
                 fmt::print("screenshot: {} ({}x{})\n", o.screenshot, shot.width, shot.height);
             }
         }
+        flight.reset();
         ctx.wait_idle();
+        if (witness) fmt::print("{}\n", witness->summary());
         if (ctx.validation_enabled()) {
             fmt::print("Vulkan validation: {} errors\n", ctx.validation_errors());
             if (ctx.validation_errors() > 0) return 1;

@@ -19,8 +19,9 @@ struct ViewOptions {
     std::string screenshot;               // PNG of the window's last frame
     bool validation = false;
     std::string device;
-    // Scripted input for tests: fly forward at this many scene units per frame (before locomotion limits).
+    // Scripted input for tests: fly forward at this throttle (1 = the distance-proportional speed).
     double autopilot = 0.0;
+    bool check_collisions = false;        // watch the head with the CPU twin and report
 };
 
 int view(const ViewOptions& options);

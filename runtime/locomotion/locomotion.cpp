@@ -5,6 +5,18 @@
 
 namespace fg {
 
+LocomotionSettings locomotion_settings(const nlohmann::json& j) {
+    LocomotionSettings s;
+    if (!j.is_object()) return s;
+    auto number = [&](const char* key, double& out) {
+        if (auto it = j.find(key); it != j.end() && it->is_number() && it->get<double>() > 0.0) out = it->get<double>();
+    };
+    number("speed_per_distance", s.speed_per_distance);
+    number("max_speed", s.max_speed);
+    number("head_radius", s.head_radius);
+    return s;
+}
+
 Locomotion::Locomotion(const LocomotionSettings& settings, double world_scale)
     : settings_(settings), world_scale_(world_scale) {}
 
@@ -30,7 +42,7 @@ glm::dvec3 Locomotion::step(const glm::dvec3& head, const glm::dvec3& direction,
     const double clearance = guaranteed_clearance(head);
     if (clearance <= margin || glm::length(direction) < 1e-12 || throttle <= 0.0 || dt <= 0.0) return head;
     const glm::dvec3 dir = glm::normalize(direction);
-    double speed = std::min(settings_.speed_per_distance * clearance, settings_.max_speed * world_scale_) * std::min(throttle, 1.0);
+    double speed = std::min(settings_.speed_per_distance * clearance, settings_.max_speed * world_scale_) * throttle;
     double want = speed * dt;
     // The farthest point along dir still inside some probe's empty ball, less the margin.
     double allowed = 0.0;

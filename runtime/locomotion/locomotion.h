@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "locomotion/collision_probe.h"
 
@@ -22,6 +23,9 @@ struct LocomotionSettings {
     double latency_s = 0.05;           // how far ahead the second probe looks along the velocity
 };
 
+// From the graph's scene.locomotion: speed_per_distance, max_speed, head_radius (all optional).
+LocomotionSettings locomotion_settings(const nlohmann::json& scene_locomotion);
+
 class Locomotion {
 public:
     Locomotion(const LocomotionSettings& settings, double world_scale);
@@ -31,8 +35,9 @@ public:
     // The newest answers; older ones are forgotten.
     void on_probe(const ProbeResult& result);
 
-    // Moves the head along `direction` (unit length, or zero) with `throttle` in [0, 1] of the
-    // distance-proportional speed, for `dt` seconds; returns the new head position.
+    // Moves the head along `direction` (unit length, or zero) at `throttle` times the
+    // distance-proportional speed (a scroll wheel may push it above 1; the probes still bound the
+    // step), for `dt` seconds; returns the new head position.
     glm::dvec3 step(const glm::dvec3& head, const glm::dvec3& direction, double throttle, double dt);
 
     // The distance to the nearest surface that the probes guarantee at `p` (0 when none does).

@@ -2,6 +2,21 @@
 # window presented, and no Vulkan validation errors.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
+if(CASE STREQUAL "flight")
+  # Autopilot straight ahead at 30 times the normal speed: the probes must stop it at the surface.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                          ${XVFB_RUN} -a -s "-screen 0 320x240x24"
+                          ${FGPLAY} view ${PACK} --frames 60 --size 48x48 --autopilot 30 --check-collisions --validation
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "Vulkan validation: 0 errors")
+    message(FATAL_ERROR "fgplay view failed (${rc})")
+  endif()
+  if(NOT out MATCHES "closest head distance 0\\.0[0-4][0-9]* over 60 frames, 0 frames inside a surface")
+    message(FATAL_ERROR "the flight entered the fractal or stopped far from it")
+  endif()
+  return()
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
                         ${XVFB_RUN} -a -s "-screen 0 640x480x24"
                         ${FGPLAY} view ${PACK} --frames 4 --size 96x96 --side-by-side --screenshot ${WORK}/window.png --validation
