@@ -19,7 +19,9 @@ namespace fg {
 struct LocomotionSettings {
     double speed_per_distance = 1.0;   // 1/s: speed = this * distance to the nearest surface
     double max_speed = 2.0;            // scene units per second per unit of world scale
-    double head_radius = 0.002;        // scene units per unit of world scale: the closest the head gets
+    // Metres (scene units per unit of world scale): the closest the head gets. More than half the
+    // distance between the eyes, so that neither eye enters the surface.
+    double head_radius = 0.05;
     double latency_s = 0.05;           // how far ahead the second probe looks along the velocity
 };
 

@@ -15,6 +15,9 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
     c.command->add_option("--knob", c.knobs, "override an accuracy knob: name=value");
     c.command->add_flag("--validation", c.options.validation,
                         "Vulkan validation layer on; its errors and OpenXR validation errors fail the run");
+    c.command->add_option("--fly", c.options.fly, "fly where you look at this throttle (1 = normal speed)");
+    c.command->add_flag("--check-collisions", c.options.check_collisions,
+                        "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");
 }
 

@@ -8,6 +8,8 @@
 
 #include "frame/frame_executor.h"
 #include "graph/scene_settings.h"
+#include "locomotion/collision_witness.h"
+#include "locomotion/probed_flight.h"
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
 #include "xr/eye_swapchain.h"
@@ -75,9 +77,12 @@ public:
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         stereo_.world_scale = scene_.world_scale;
+        flight_ = std::make_unique<ProbedFlight>(ctx, pack, locomotion_settings(scene_.locomotion), scene_.world_scale);
+        if (o.check_collisions) witness_ = std::make_unique<CollisionWitness>(pack);
     }
 
     ~XrPlayer() {
+        flight_.reset();
         executor_.reset();
         for (auto& s : swapchains_) s.reset();
         if (space_) xrDestroySpace(space_);
@@ -113,6 +118,7 @@ public:
     std::int64_t format() const { return format_; }
     const EyeSwapchain& swapchain(int eye) const { return *swapchains_[eye]; }
     const LensMask& lens_mask(int eye) const { return masks_[eye]; }
+    const CollisionWitness* witness() const { return witness_.get(); }
 
 private:
     SessionAction poll_events() {
@@ -181,7 +187,15 @@ private:
         glm::dvec3 eye_l = to_glm(views[0].pose.position), eye_r = to_glm(views[1].pose.position);
         HeadPose head;
         head.orientation = origin_.orientation * glm::normalize(to_glm(views[0].pose.orientation));
-        head.position = origin_.position + scene_.world_scale * (origin_.orientation * (0.5 * (eye_l + eye_r)));
+        head.position = origin_.position + offset_ + scene_.world_scale * (origin_.orientation * (0.5 * (eye_l + eye_r)));
+        // Gaze-directed flight moves the tracking space through the scene, as far as the probes allow.
+        const double dt = last_time_ ? static_cast<double>(time - last_time_) * 1e-9 : 0.0;
+        last_time_ = time;
+        glm::dvec3 gaze = glm::mat3_cast(head.orientation) * glm::dvec3(0.0, 0.0, -1.0);
+        glm::dvec3 moved = flight_->update(head.position, gaze, options_.fly, dt);
+        offset_ += moved - head.position;
+        head.position = moved;
+        if (witness_) witness_->observe(head.position);
         stereo_.ipd_m = glm::length(eye_r - eye_l);
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
@@ -254,7 +268,10 @@ private:
     StereoSettings stereo_;
     std::unique_ptr<FrameExecutor> executor_;
     std::uint32_t centre_width_ = 0, centre_height_ = 0;
-    XrTime first_time_ = 0;
+    XrTime first_time_ = 0, last_time_ = 0;
+    glm::dvec3 offset_{0.0};
+    std::unique_ptr<ProbedFlight> flight_;
+    std::unique_ptr<CollisionWitness> witness_;
     SessionLifecycle lifecycle_;
     LensMask masks_[2];
     bool masks_dirty_ = true;
@@ -297,6 +314,7 @@ int play_xr(const XrPlayOptions& o) {
                     fmt::print("mean GPU time per frame:{}\n", passes.substr(0, passes.size() - 1));
                 }
                 fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
+                if (player.witness()) fmt::print("{}\n", player.witness()->summary());
                 if (instance.has_visibility_mask())
                     fmt::print("lens mask (XR_KHR_visibility_mask): {} + {} hidden triangles, {:.1f} % / {:.1f} % of pixels hidden\n",
                                player.lens_mask(0).triangles, player.lens_mask(1).triangles,

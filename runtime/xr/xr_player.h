@@ -19,6 +19,8 @@ struct XrPlayOptions {
     bool validation = false;             // Vulkan validation; errors (and OpenXR validation errors) fail the run
     std::string device;
     std::map<std::string, double> knobs;
+    double fly = 0.0;                    // gaze-directed flight at this throttle (1 = normal speed)
+    bool check_collisions = false;       // watch the head with the CPU twin and report
 };
 
 // Exit codes: 0 clean, 1 error (no runtime, validation errors, ...), 2 the session was lost.
