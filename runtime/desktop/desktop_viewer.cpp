@@ -149,7 +149,7 @@ int view(const ViewOptions& o) {
 
             stereo.world_scale = scene.world_scale;
             StereoViews views = make_stereo_views(camera.pose(), fov_of(scene), fov_of(scene), stereo);
-            playing.executor->set_frame(make_gpu_frame(views, frame.cone_levels, frames / 60.0, scene.world_scale,
+            playing.executor->set_frame(make_gpu_frame(views, frame, frames / 60.0, scene.world_scale,
                                                        static_cast<std::uint32_t>(frames)));
             FrameStats stats = playing.executor->run();
             ++frames;

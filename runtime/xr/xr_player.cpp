@@ -1,5 +1,6 @@
 #include "xr/xr_player.h"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -13,7 +14,7 @@
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
 #include "xr/eye_swapchain.h"
-#include "xr/lens_mask.h"
+#include "xr/visibility_mask.h"
 #include "xr/session_lifecycle.h"
 #include "xr/vulkan_binding.h"
 #include "xr/xr_error.h"
@@ -117,7 +118,8 @@ public:
     const FrameSettings& frame_settings() const { return frame_; }
     std::int64_t format() const { return format_; }
     const EyeSwapchain& swapchain(int eye) const { return *swapchains_[eye]; }
-    const LensMask& lens_mask(int eye) const { return masks_[eye]; }
+    const VisibilityMask& visibility_mask(int eye) const { return masks_[eye]; }
+    const LensEllipse& lens(int eye) const { return lenses_[eye]; }
     const CollisionWitness* witness() const { return witness_.get(); }
 
 private:
@@ -209,8 +211,15 @@ private:
         }
         if (masks_dirty_) update_lens_masks(sv);
         if (first_time_ == 0) first_time_ = time;
-        executor_->set_frame(make_gpu_frame(sv, frame_.cone_levels, static_cast<double>(time - first_time_) * 1e-9,
-                                            scene_.world_scale, static_cast<std::uint32_t>(stats_.frames)));
+        GpuFrame gpu = make_gpu_frame(sv, frame_, static_cast<double>(time - first_time_) * 1e-9, scene_.world_scale,
+                                      static_cast<std::uint32_t>(stats_.frames));
+        // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
+        // pixels outside it are never marched.
+        for (int eye = 0; eye < 2; ++eye)
+            if (lenses_[eye].radius_u > 0.0)
+                gpu.views[eye].lens = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v),
+                                       static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
+        executor_->set_frame(gpu);
         FrameStats fs = executor_->run();
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
@@ -251,6 +260,7 @@ private:
             std::vector<float> flat;
             for (const auto& v : vertices) flat.insert(flat.end(), {v.x, v.y});
             masks_[eye] = rasterize_hidden_triangles(flat, indices, eyes[eye]->fov, frame_.width, frame_.height);
+            lenses_[eye] = enclosing_lens(masks_[eye], lens_ellipse(*eyes[eye]));
         }
     }
 
@@ -273,7 +283,8 @@ private:
     std::unique_ptr<ProbedFlight> flight_;
     std::unique_ptr<CollisionWitness> witness_;
     SessionLifecycle lifecycle_;
-    LensMask masks_[2];
+    VisibilityMask masks_[2];
+    LensEllipse lenses_[2];
     bool masks_dirty_ = true;
     PlayStats stats_;
 };
@@ -315,10 +326,18 @@ int play_xr(const XrPlayOptions& o) {
                 }
                 fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
                 if (player.witness()) fmt::print("{}\n", player.witness()->summary());
-                if (instance.has_visibility_mask())
-                    fmt::print("lens mask (XR_KHR_visibility_mask): {} + {} hidden triangles, {:.1f} % / {:.1f} % of pixels hidden\n",
-                               player.lens_mask(0).triangles, player.lens_mask(1).triangles,
-                               100.0 * player.lens_mask(0).hidden_fraction(), 100.0 * player.lens_mask(1).hidden_fraction());
+                if (instance.has_visibility_mask()) {
+                    auto skipped = [&](int eye) {
+                        const auto& m = player.visibility_mask(eye);
+                        auto v = visible_pixels(player.lens(eye), m.width, m.height);
+                        return 100.0 * static_cast<double>(std::count(v.begin(), v.end(), std::uint8_t{0})) / static_cast<double>(v.size());
+                    };
+                    fmt::print("lens mask (XR_KHR_visibility_mask): {} + {} hidden triangles hide {:.1f} % / {:.1f} % of the "
+                               "pixels; the enclosing lens ellipse skips {:.1f} % / {:.1f} %\n",
+                               player.visibility_mask(0).triangles, player.visibility_mask(1).triangles,
+                               100.0 * player.visibility_mask(0).hidden_fraction(),
+                               100.0 * player.visibility_mask(1).hidden_fraction(), skipped(0), skipped(1));
+                }
                 else
                     fmt::print("lens mask: the runtime has no XR_KHR_visibility_mask\n");
             }

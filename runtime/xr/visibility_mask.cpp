@@ -1,19 +1,19 @@
-#include "xr/lens_mask.h"
+#include "xr/visibility_mask.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace fg::xr {
 
-double LensMask::hidden_fraction() const {
+double VisibilityMask::hidden_fraction() const {
     if (visible.empty()) return 0.0;
     auto hidden = std::count(visible.begin(), visible.end(), std::uint8_t{0});
     return static_cast<double>(hidden) / static_cast<double>(visible.size());
 }
 
-LensMask rasterize_hidden_triangles(const std::vector<float>& vertices, const std::vector<std::uint32_t>& indices,
+VisibilityMask rasterize_hidden_triangles(const std::vector<float>& vertices, const std::vector<std::uint32_t>& indices,
                                     const Fov& fov, std::uint32_t width, std::uint32_t height) {
-    LensMask mask;
+    VisibilityMask mask;
     mask.width = width;
     mask.height = height;
     mask.visible.assign(static_cast<std::size_t>(width) * height, 1);
@@ -42,6 +42,26 @@ LensMask rasterize_hidden_triangles(const std::vector<float>& vertices, const st
         }
     }
     return mask;
+}
+
+}  // namespace fg::xr
+
+namespace fg::xr {
+
+LensEllipse enclosing_lens(const VisibilityMask& mask, const LensEllipse& around) {
+    if (mask.visible.empty() || around.radius_u <= 0.0 || mask.hidden_fraction() == 0.0) return {};
+    double scale = 0.0;
+    for (std::uint32_t y = 0; y < mask.height; ++y)
+        for (std::uint32_t x = 0; x < mask.width; ++x) {
+            if (!mask.visible[static_cast<std::size_t>(y) * mask.width + x]) continue;
+            double qu = ((x + 0.5) / mask.width - around.centre_u) / around.radius_u;
+            double qv = ((y + 0.5) / mask.height - around.centre_v) / around.radius_v;
+            scale = std::max(scale, std::sqrt(qu * qu + qv * qv));
+        }
+    LensEllipse out = around;
+    out.radius_u = around.radius_u * scale + 0.5 / mask.width;
+    out.radius_v = around.radius_v * scale + 0.5 / mask.height;
+    return out;
 }
 
 }  // namespace fg::xr
