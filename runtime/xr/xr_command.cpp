@@ -15,6 +15,9 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
     c.command->add_option("--knob", c.knobs, "override an accuracy knob: name=value");
     c.command->add_flag("--validation", c.options.validation,
                         "Vulkan validation layer on; its errors and OpenXR validation errors fail the run");
+    c.command->add_flag_function("--no-governor", [&c](std::int64_t) { c.options.governor = false; },
+                        "keep the settings fixed instead of holding the frame budget");
+    c.command->add_option("--budget-ms", c.options.budget_ms, "GPU time per frame to hold (default: the display period)");
     c.command->add_option("--fly", c.options.fly, "fly where you look at this throttle (1 = normal speed)");
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");

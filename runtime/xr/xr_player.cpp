@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <thread>
 
@@ -14,6 +16,7 @@
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
 #include "xr/eye_swapchain.h"
+#include "xr/frame_governor.h"
 #include "xr/visibility_mask.h"
 #include "xr/session_lifecycle.h"
 #include "xr/vulkan_binding.h"
@@ -70,8 +73,11 @@ public:
         for (int eye = 0; eye < 2; ++eye)
             swapchains_[eye] = std::make_unique<EyeSwapchain>(session_, format_, views[eye].recommendedImageRectWidth,
                                                               views[eye].recommendedImageRectHeight);
-        frame_.width = o.width ? o.width : views[0].recommendedImageRectWidth;
-        frame_.height = o.height ? o.height : views[0].recommendedImageRectHeight;
+        base_width_ = o.width ? o.width : views[0].recommendedImageRectWidth;
+        base_height_ = o.height ? o.height : views[0].recommendedImageRectHeight;
+        frame_.width = base_width_;
+        frame_.height = base_height_;
+        governor_ = std::make_unique<FrameGovernor>(governor_ladder(pack.manifest));
         frame_.stereo = o.stereo;
         frame_.cone_levels = o.cone_levels;
         frame_.knobs = o.knobs;
@@ -121,6 +127,7 @@ public:
     const VisibilityMask& visibility_mask(int eye) const { return masks_[eye]; }
     const LensEllipse& lens(int eye) const { return lenses_[eye]; }
     const CollisionWitness* witness() const { return witness_.get(); }
+    const FrameGovernor& governor() const { return *governor_; }
 
 private:
     SessionAction poll_events() {
@@ -158,7 +165,7 @@ private:
         XrCompositionLayerProjectionView projection[2] = {{XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW},
                                                           {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW}};
         std::vector<const XrCompositionLayerBaseHeader*> layers;
-        if (fs.shouldRender && render(fs.predictedDisplayTime, projection)) {
+        if (fs.shouldRender && render(fs.predictedDisplayTime, fs.predictedDisplayPeriod, projection)) {
             layer.space = space_;
             layer.viewCount = 2;
             layer.views = projection;
@@ -173,7 +180,7 @@ private:
     }
 
     // Renders both eyes for the views predicted at `time`; false when tracking is lost.
-    bool render(XrTime time, XrCompositionLayerProjectionView* projection) {
+    bool render(XrTime time, XrDuration period_ns, XrCompositionLayerProjectionView* projection) {
         XrViewLocateInfo li{XR_TYPE_VIEW_LOCATE_INFO};
         li.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
         li.displayTime = time;
@@ -201,7 +208,9 @@ private:
         stereo_.ipd_m = glm::length(eye_r - eye_l);
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
-        if (!executor_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {
+        if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {
+            rebuild_ = false;
+            masks_dirty_ = true;
             ctx_.wait_idle();
             executor_.reset();
             executor_ = std::make_unique<FrameExecutor>(ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width,
@@ -221,6 +230,7 @@ private:
                                        static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
         executor_->set_frame(gpu);
         FrameStats fs = executor_->run();
+        if (options_.governor) govern(fs, period_ns);
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
         for (int eye = 0; eye < 2; ++eye) {
@@ -236,6 +246,29 @@ private:
         if (auto it = fs.gpu_ms.find("frame"); it != fs.gpu_ms.end()) stats_.gpu_ms_sum += it->second;
         for (const auto& [pass, ms] : fs.gpu_ms) stats_.pass_ms_sum[pass] += ms;
         return true;
+    }
+
+    // Reads this frame's GPU time; a new level takes effect from the next frame (new sizes and
+    // pipelines), logged with its reason.
+    void govern(const FrameStats& fs, XrDuration period_ns) {
+        auto it = fs.gpu_ms.find("frame");
+        if (it == fs.gpu_ms.end()) return;
+        double budget = options_.budget_ms > 0.0 ? options_.budget_ms : static_cast<double>(period_ns) * 1e-6;
+        bool changed = governor_->observe(it->second, budget);
+        if (!governor_->message().empty()) {
+            fmt::print("governor: {}\n", governor_->message());
+            std::fflush(stdout);
+        }
+        if (!changed) return;
+        const GovernorLevel& level = governor_->current();
+        frame_.width = std::max(8u, static_cast<std::uint32_t>(std::lround(base_width_ * level.render_scale)));
+        frame_.height = std::max(8u, static_cast<std::uint32_t>(std::lround(base_height_ * level.render_scale)));
+        frame_.foveation = level.foveation;
+        frame_.knobs = options_.knobs;
+        for (const auto& [k, v] : level.knobs) frame_.knobs[k] = v;
+        stereo_.width = frame_.width;
+        stereo_.height = frame_.height;
+        rebuild_ = true;
     }
 
     void update_lens_masks(const StereoViews& sv) {
@@ -281,6 +314,9 @@ private:
     XrTime first_time_ = 0, last_time_ = 0;
     glm::dvec3 offset_{0.0};
     std::unique_ptr<ProbedFlight> flight_;
+    std::unique_ptr<FrameGovernor> governor_;
+    std::uint32_t base_width_ = 0, base_height_ = 0;
+    bool rebuild_ = false;
     std::unique_ptr<CollisionWitness> witness_;
     SessionLifecycle lifecycle_;
     VisibilityMask masks_[2];
@@ -326,6 +362,9 @@ int play_xr(const XrPlayOptions& o) {
                 }
                 fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
                 if (player.witness()) fmt::print("{}\n", player.witness()->summary());
+                if (o.governor)
+                    fmt::print("governor: ended at level {} of {} ({})\n", player.governor().level(),
+                               player.governor().levels() - 1, player.governor().current().describe());
                 if (instance.has_visibility_mask()) {
                     auto skipped = [&](int eye) {
                         const auto& m = player.visibility_mask(eye);

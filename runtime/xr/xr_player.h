@@ -19,6 +19,8 @@ struct XrPlayOptions {
     bool validation = false;             // Vulkan validation; errors (and OpenXR validation errors) fail the run
     std::string device;
     std::map<std::string, double> knobs;
+    bool governor = true;                // hold the frame budget by moving along the accuracy ladder
+    double budget_ms = 0.0;              // 0 = the display period the runtime predicts
     double fly = 0.0;                    // gaze-directed flight at this throttle (1 = normal speed)
     bool check_collisions = false;       // watch the head with the CPU twin and report
 };

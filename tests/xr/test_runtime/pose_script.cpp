@@ -99,7 +99,25 @@ XrFovf PoseScript::fov(int eye) const {
     return f;
 }
 
+XrDuration EventScript::period_ns(int frame) const {
+    for (const auto& [ms, frames] : periods) {
+        if (frames <= 0 || frame < frames) return static_cast<XrDuration>(ms * 1e6);
+        frame -= frames;
+    }
+    return 11'111'111;
+}
+
 EventScript::EventScript() {
+    if (const char* p = std::getenv("FG_XR_TEST_PERIODS")) {
+        std::stringstream in(p);
+        std::string item;
+        while (std::getline(in, item, ',')) {
+            double ms = std::atof(item.c_str());
+            auto colon = item.find(':');
+            int frames = colon == std::string::npos ? 0 : std::atoi(item.c_str() + colon + 1);
+            if (ms > 0.0) periods.emplace_back(ms, frames);
+        }
+    }
     const char* s = std::getenv("FG_XR_TEST_EVENTS");
     if (!s) return;
     std::stringstream in(s);

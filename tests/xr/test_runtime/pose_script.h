@@ -6,6 +6,8 @@
 //   FG_XR_TEST_EVENTS  comma list: "stop@N" (the user quits from the headset after frame N),
 //                      "loss@N" (the session is lost after frame N).
 //   FG_XR_TEST_SIZE    recommended per-eye size WxH (default 96x96).
+//   FG_XR_TEST_PERIODS the display period: "MS:FRAMES,...,MS" (e.g. "0.01:25,1000": an impossible
+//                      budget for 25 frames, then a generous one). Default 11.1 ms (90 Hz).
 #include <string>
 #include <vector>
 
@@ -35,8 +37,10 @@ private:
 };
 
 struct EventScript {
-    EventScript();   // reads FG_XR_TEST_EVENTS
+    EventScript();   // reads FG_XR_TEST_EVENTS and FG_XR_TEST_PERIODS
     int stop_at = -1, loss_at = -1;
+    std::vector<std::pair<double, int>> periods;   // (ms, frames); the last holds for ever
+    XrDuration period_ns(int frame) const;
 };
 
 }  // namespace fgxrt

@@ -297,13 +297,14 @@ XRAPI_ATTR XrResult XRAPI_CALL WaitFrame(XrSession handle, const XrFrameWaitInfo
         push_state(*s, XR_SESSION_STATE_FOCUSED);
     }
     // No real display: time advances one period per frame, so every run is the same.
+    const XrDuration period = inst->script.period_ns(inst->report.frames_waited);
     s->waited_display_time = s->next_display_time;
-    s->next_display_time += kPeriodNs;
-    inst->clock += kPeriodNs;
+    s->next_display_time += period;
+    inst->clock += period;
     s->frame_waited = true;
     ++inst->report.frames_waited;
     state->predictedDisplayTime = s->waited_display_time;
-    state->predictedDisplayPeriod = kPeriodNs;
+    state->predictedDisplayPeriod = period;
     state->shouldRender = s->state == XR_SESSION_STATE_VISIBLE || s->state == XR_SESSION_STATE_FOCUSED;
     return XR_SUCCESS;
 }
