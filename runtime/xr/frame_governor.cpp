@@ -7,7 +7,7 @@
 namespace fg::xr {
 
 std::string GovernorLevel::describe() const {
-    std::string s = fmt::format("scale {:.2f}, foveation {}", render_scale, foveation > 0.0 ? fmt::format("{:.2f}", foveation) : "off");
+    std::string s = fmt::format("scale {:.2f}, foveation {}", render_scale, foveation > 0.0 ? fmt::format("{:.2f}", foveation) : foveation < 0.0 ? "as the scene says" : "off");
     for (const auto& [k, v] : knobs) s += fmt::format(", {} {}", k, v);
     return s;
 }
@@ -17,7 +17,7 @@ std::vector<GovernorLevel> governor_ladder(const PackManifest& m) {
         double scale, foveation, epsilon_factor, max_steps_factor;
     };
     // Cheapest last. Resolution and foveation first: their error stays out of the fovea.
-    const Step steps[] = {{1.0, 0.0, 1.0, 1.0}, {1.0, 0.6, 1.0, 1.0}, {0.85, 0.6, 1.5, 1.0}, {0.7, 0.5, 2.0, 0.5}, {0.5, 0.4, 3.0, 0.375}};
+    const Step steps[] = {{1.0, -1.0, 1.0, 1.0}, {1.0, 0.6, 1.0, 1.0}, {0.85, 0.6, 1.5, 1.0}, {0.7, 0.5, 2.0, 0.5}, {0.5, 0.4, 3.0, 0.375}};
     std::vector<GovernorLevel> ladder;
     for (const auto& st : steps) {
         GovernorLevel level;

@@ -18,7 +18,7 @@ namespace fg::xr {
 
 struct GovernorLevel {
     double render_scale = 1.0;           // of the per-eye render size
-    double foveation = 0.0;              // fovea radius in half image heights, 0 = off
+    double foveation = -1.0;             // fovea radius in half image heights, 0 = off, < 0 = as the scene says
     std::map<std::string, double> knobs; // absolute knob values for this pack
     std::string describe() const;
 };

@@ -91,7 +91,7 @@ if(CASE MATCHES "^gaze_flight" AND NOT out MATCHES "closest head distance 0\\.0[
   message(FATAL_ERROR "the flight entered the fractal or stopped far from it")
 endif()
 if(CASE MATCHES "^the_governor")
-  if(NOT out MATCHES "governor: at the floor \\(level 4" OR NOT out MATCHES "governor: ended at level 0 of 4")
+  if(NOT out MATCHES "governor: at the floor \\(level 4" OR NOT out MATCHES "governor: ended at level 0 of 4 \\(scale 1.00, foveation as the scene says\\)")
     message(FATAL_ERROR "the governor did not reach the floor under the impossible budget, or did not climb back")
   endif()
 endif()
