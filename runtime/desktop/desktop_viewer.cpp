@@ -13,6 +13,7 @@
 #include "desktop/pack_source.h"
 #include "desktop/window_presenter.h"
 #include "locomotion/collision_witness.h"
+#include "locomotion/comfort_vignette.h"
 #include "locomotion/probed_flight.h"
 #include "graph/scene_settings.h"
 #include "image_output.h"
@@ -111,7 +112,9 @@ int view(const ViewOptions& o) {
 
             double x = 0.0, y = 0.0;
             glfwGetCursorPos(presenter.window(), &x, &y);
+            const glm::dvec3 forward_before = camera.forward();
             if (glfwGetMouseButton(presenter.window(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) camera.look(x - last_x, y - last_y);
+            const double turn = dt > 0.0 ? std::acos(std::clamp(glm::dot(forward_before, camera.forward()), -1.0, 1.0)) / dt : 0.0;
             last_x = x;
             last_y = y;
             throttle = std::clamp(throttle * std::pow(1.25, input.scroll), 0.01, 100.0);
@@ -151,6 +154,13 @@ int view(const ViewOptions& o) {
             StereoViews views = make_stereo_views(camera.pose(), fov_of(scene), fov_of(scene), stereo);
             playing.executor->set_frame(make_gpu_frame(views, frame, frames / 60.0, scene.world_scale,
                                                        static_cast<std::uint32_t>(frames)));
+            // Flying and mouse-look are both artificial motion: both drive the comfort vignette.
+            GpuScene scene_gpu = make_gpu_scene(playing.pack->manifest.scene);
+            if (scene_gpu.misc[2] > 0.0f) {
+                scene_gpu.misc[2] = static_cast<float>(comfort_vignette(
+                    glm::length(flight->locomotion().velocity()) / scene.world_scale, turn, scene_gpu.misc[2]));
+                playing.executor->set_scene(scene_gpu);
+            }
             FrameStats stats = playing.executor->run();
             ++frames;
             const bool last_frame = o.frames > 0 && frames == o.frames;

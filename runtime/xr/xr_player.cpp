@@ -12,6 +12,7 @@
 #include "frame/frame_executor.h"
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
+#include "locomotion/comfort_vignette.h"
 #include "locomotion/probed_flight.h"
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
@@ -44,6 +45,7 @@ public:
         Diagnostics ignore;
         scene_ = parse_scene_settings(&pack.manifest.scene, "/scene", ignore);
         origin_ = look_at(scene_.camera.position, scene_.camera.target, scene_.camera.up);
+        scene_gpu_ = make_gpu_scene(pack.manifest.scene);
 
         XrGraphicsBindingVulkan2KHR binding = graphics_binding(ctx);
         XrSessionCreateInfo si{XR_TYPE_SESSION_CREATE_INFO};
@@ -229,6 +231,13 @@ private:
                 gpu.views[eye].lens = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v),
                                        static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
         executor_->set_frame(gpu);
+        // Flight (not the tracked head) drives the comfort vignette, where the scene has one.
+        if (scene_gpu_.misc[2] > 0.0f) {
+            GpuScene sc = scene_gpu_;
+            sc.misc[2] = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / scene_.world_scale, 0.0,
+                                                             scene_gpu_.misc[2]));
+            executor_->set_scene(sc);
+        }
         FrameStats fs = executor_->run();
         if (options_.governor) govern(fs, period_ns);
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
@@ -303,6 +312,7 @@ private:
     XrPlayOptions options_;
     SceneSettings scene_;
     HeadPose origin_;
+    GpuScene scene_gpu_{};
     XrSession session_ = XR_NULL_HANDLE;
     XrSpace space_ = XR_NULL_HANDLE;
     std::int64_t format_ = 0;

@@ -69,3 +69,19 @@ TEST(Locomotion, ProbesLookAheadAlongTheVelocity) {
 
 }  // namespace
 }  // namespace fg
+
+#include "locomotion/comfort_vignette.h"
+
+namespace fg {
+namespace {
+
+TEST(ComfortVignette, NoneAtRestGrowingWithSpeedAndTurningUpToTheScenesStrength) {
+    EXPECT_EQ(comfort_vignette(0.0, 0.0, 0.8), 0.0);
+    EXPECT_NEAR(comfort_vignette(1.0, 0.0, 0.8), 0.4, 1e-12);
+    EXPECT_GT(comfort_vignette(1.0, 0.5, 0.8), comfort_vignette(1.0, 0.0, 0.8));
+    EXPECT_EQ(comfort_vignette(100.0, 10.0, 0.8), 0.8);
+    EXPECT_EQ(comfort_vignette(1.0, 1.0, 0.0), 0.0) << "a scene without a vignette gets none";
+}
+
+}  // namespace
+}  // namespace fg
