@@ -256,3 +256,13 @@ std::vector<std::byte> FrameExecutor::download(const std::string& image) const {
 }
 
 }  // namespace fg
+
+namespace fg {
+
+vk::StorageImage& FrameExecutor::image(const std::string& name) const {
+    auto it = images_.find(name);
+    if (it == images_.end()) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", name));
+    return *it->second;
+}
+
+}  // namespace fg

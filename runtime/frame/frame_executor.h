@@ -39,6 +39,8 @@ public:
 
     FrameStats run();
     std::vector<std::byte> download(const std::string& image) const;
+    // For backends that copy a result on the GPU (an OpenXR swapchain, a window).
+    vk::StorageImage& image(const std::string& name) const;
     const FrameGraph& graph() const { return graph_; }
 
 private:

@@ -5,6 +5,12 @@
 
 #include "bench_runner.h"
 #include "fgplay_render.h"
+#ifdef FG_HAVE_XR
+#include "xr/xr_command.h"
+#endif
+#ifdef FG_HAVE_DESKTOP
+#include "desktop/view_command.h"
+#endif
 
 int main(int argc, char** argv) {
     CLI::App app{"fgplay: plays Fractograph shader packs (.fgpack)"};
@@ -55,7 +61,22 @@ int main(int argc, char** argv) {
     bool no_plots = false;
     bench->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
+#ifdef FG_HAVE_XR
+    fg::xr::XrCommand xr;
+    fg::xr::add_xr_command(app, xr);
+#endif
+#ifdef FG_HAVE_DESKTOP
+    fg::desktop::ViewCommand view;
+    fg::desktop::add_view_command(app, view);
+#endif
+
     CLI11_PARSE(app, argc, argv);
+#ifdef FG_HAVE_XR
+    if (xr.chosen()) return xr.run();
+#endif
+#ifdef FG_HAVE_DESKTOP
+    if (view.chosen()) return view.run();
+#endif
     if (*bench) {
         if (b.pack.empty() == b.graph.empty()) {
             fmt::print(stderr, "fgplay bench: give a pack or --graph, not both\n");

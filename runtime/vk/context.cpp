@@ -82,6 +82,7 @@ VkDebugUtilsMessengerCreateInfoEXT messenger_info(ValidationLog* validation_log)
 
 Context::Context(const ContextOptions& options) {
     try {
+        hooks_ = options.hooks;
         create_instance(options.validation || validation_forced_by_environment(),
                         options.synchronization_validation);
         select_physical_device(options);
@@ -187,7 +188,8 @@ void Context::create_instance(bool validation, bool synchronization_validation) 
     }
     info.pNext = chain;
 
-    const VkResult created = vkCreateInstance(&info, nullptr, &instance_);
+    const VkResult created = hooks_.create_instance ? hooks_.create_instance(info, instance_)
+                                                    : vkCreateInstance(&info, nullptr, &instance_);
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw VulkanError(created, "no Vulkan device found: install mesa-vulkan-drivers for lavapipe "
                                    "(vkCreateInstance failed: VK_ERROR_INCOMPATIBLE_DRIVER)");
@@ -210,6 +212,12 @@ void Context::select_physical_device(const ContextOptions& options) {
     std::vector<VkPhysicalDevice> devices(count);
     check(vkEnumeratePhysicalDevices(instance_, &count, devices.data()), "vkEnumeratePhysicalDevices");
     devices.resize(count);
+    if (hooks_.physical_device) {
+        VkPhysicalDevice required = hooks_.physical_device(instance_);
+        std::erase_if(devices, [&](VkPhysicalDevice d) { return d != required; });
+        if (devices.empty())
+            throw VulkanError(VK_ERROR_INITIALIZATION_FAILED, "the physical device required by the caller is not listed");
+    }
 
     std::vector<DeviceCandidate> candidates;
     for (std::uint32_t i = 0; i < devices.size(); ++i) {
@@ -304,7 +312,9 @@ void Context::create_device(const ContextOptions& options) {
     info.pQueueCreateInfos = &queue_info;
     info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
-    check(vkCreateDevice(physical_, &info, nullptr, &device_), "vkCreateDevice");
+    check(hooks_.create_device ? hooks_.create_device(physical_, info, device_)
+                               : vkCreateDevice(physical_, &info, nullptr, &device_),
+          "vkCreateDevice");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 
     // In memory only: it saves recompiling a pipeline that is built twice in one run.

@@ -3,6 +3,7 @@
 // logical device. Everything else borrows a `const Context&` and must not outlive it.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -14,6 +15,14 @@
 
 namespace fg::vk {
 
+// Lets another API own instance and device creation (OpenXR's XR_KHR_vulkan_enable2 creates both
+// so that the headset's compositor can share the device). Each hook replaces one plain Vulkan call.
+struct ContextCreationHooks {
+    std::function<VkResult(const VkInstanceCreateInfo&, VkInstance&)> create_instance;
+    std::function<VkPhysicalDevice(VkInstance)> physical_device;   // the only device to consider
+    std::function<VkResult(VkPhysicalDevice, const VkDeviceCreateInfo&, VkDevice&)> create_device;
+};
+
 struct ContextOptions {
     bool validation = false;     // also forced on by the environment variable FG_VK_VALIDATION=1
     std::string device;          // index "1" or case-insensitive name substring; empty = automatic
@@ -22,6 +31,7 @@ struct ContextOptions {
     bool shader_int64 = false;
     // Adds the validation layer's synchronization checks (missing barriers); slow, for tests.
     bool synchronization_validation = false;
+    ContextCreationHooks hooks;
 };
 
 class Context {
@@ -73,6 +83,7 @@ private:
     void destroy() noexcept;
 
     std::shared_ptr<ValidationLog> validation_log_ = std::make_shared<ValidationLog>();
+    ContextCreationHooks hooks_;
 
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

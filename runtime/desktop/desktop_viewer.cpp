@@ -1,0 +1,202 @@
+#include "desktop/desktop_viewer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include "desktop/fly_camera.h"
+#include "desktop/pack_source.h"
+#include "desktop/window_presenter.h"
+#include "locomotion/collision_witness.h"
+#include "locomotion/comfort_vignette.h"
+#include "locomotion/probed_flight.h"
+#include "graph/scene_settings.h"
+#include "image_output.h"
+#include "vk/vulkan_error.h"
+
+namespace fg::desktop {
+
+namespace {
+
+struct Input {
+    double scroll = 0.0;
+    bool toggle_stereo = false;
+};
+
+void on_scroll(GLFWwindow* w, double, double dy) { static_cast<Input*>(glfwGetWindowUserPointer(w))->scroll += dy; }
+
+void on_key(GLFWwindow* w, int key, int, int action, int) {
+    if (action != GLFW_PRESS) return;
+    if (key == GLFW_KEY_B) static_cast<Input*>(glfwGetWindowUserPointer(w))->toggle_stereo = true;
+    if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+}
+
+std::string pass_times(const FrameStats& s) {
+    std::string out;
+    for (const auto& [pass, ms] : s.gpu_ms)
+        if (pass != "frame") out += fmt::format("{}{} {:.1f}", out.empty() ? "" : ", ", pass, ms);
+    auto f = s.gpu_ms.find("frame");
+    return f == s.gpu_ms.end() ? "no GPU timestamps" : fmt::format("GPU {:.1f} ms ({})", f->second, out);
+}
+
+}  // namespace
+
+int view(const ViewOptions& o) {
+    try {
+        // Room for both eyes side by side; one eye is shown centred.
+        WindowPresenter presenter(2 * o.width, o.height, "fgplay view");
+        vk::ContextOptions co;
+        co.validation = o.validation;
+        co.device = o.device;
+        co.require_timestamps = false;
+        co.hooks = WindowPresenter::context_hooks();
+        vk::Context ctx(co);
+        struct Detach {
+            WindowPresenter& p;
+            ~Detach() { p.detach(); }
+        } detach_before_context_ends{presenter};
+        presenter.attach(ctx);
+
+        FrameSettings frame;
+        frame.width = o.width;
+        frame.height = o.height;
+        frame.stereo = o.stereo;
+        StereoSettings stereo;
+        stereo.width = o.width;
+        stereo.height = o.height;
+        auto scene_of = [](const Pack& p) {
+            Diagnostics ignore;
+            return parse_scene_settings(&p.manifest.scene, "/scene", ignore);
+        };
+        auto fov_of = [&](const SceneSettings& s) { return Fov::symmetric(s.camera.fov_deg, double(o.width) / o.height); };
+        PackSource source(o.path, o.watch, [&](const Pack& p) {
+            SceneSettings s = scene_of(p);
+            StereoSettings st = stereo;
+            st.world_scale = s.world_scale;
+            StereoViews v = make_stereo_views(HeadPose{}, fov_of(s), fov_of(s), st);
+            return std::make_unique<FrameExecutor>(ctx, p, FrameGraph::build(p.manifest, frame, v.centre.width, v.centre.height));
+        });
+        LoadedPack playing = source.load_now();
+        SceneSettings scene = scene_of(*playing.pack);
+        fmt::print("fgplay view: {} on {} ({:.0f} ms to load, {:.0f} ms for pipelines)\n", o.path, ctx.device_name(),
+                   playing.compile_ms, playing.pipelines_ms);
+        FlyCamera camera(look_at(scene.camera.position, scene.camera.target, scene.camera.up));
+        auto make_flight = [&] {
+            return std::make_unique<ProbedFlight>(ctx, *playing.pack, locomotion_settings(scene.locomotion), scene.world_scale);
+        };
+        std::unique_ptr<ProbedFlight> flight = make_flight();
+        std::unique_ptr<CollisionWitness> witness;
+        if (o.check_collisions) witness = std::make_unique<CollisionWitness>(*playing.pack);
+
+        Input input;
+        glfwSetWindowUserPointer(presenter.window(), &input);
+        glfwSetScrollCallback(presenter.window(), on_scroll);
+        glfwSetKeyCallback(presenter.window(), on_key);
+        bool side_by_side = o.side_by_side;
+        double throttle = 1.0;   // the scroll wheel's share of the distance-proportional speed
+        double last_x = 0.0, last_y = 0.0;
+        glfwGetCursorPos(presenter.window(), &last_x, &last_y);
+        auto last = std::chrono::steady_clock::now();
+        std::string status;
+        int frames = 0;
+        while (!presenter.should_close() && (o.frames == 0 || frames < o.frames)) {
+            glfwPollEvents();
+            auto now = std::chrono::steady_clock::now();
+            double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+            last = now;
+
+            double x = 0.0, y = 0.0;
+            glfwGetCursorPos(presenter.window(), &x, &y);
+            const glm::dvec3 forward_before = camera.forward();
+            if (glfwGetMouseButton(presenter.window(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) camera.look(x - last_x, y - last_y);
+            const double turn = dt > 0.0 ? std::acos(std::clamp(glm::dot(forward_before, camera.forward()), -1.0, 1.0)) / dt : 0.0;
+            last_x = x;
+            last_y = y;
+            throttle = std::clamp(throttle * std::pow(1.25, input.scroll), 0.01, 100.0);
+            input.scroll = 0.0;
+            if (input.toggle_stereo) side_by_side = !side_by_side;
+            input.toggle_stereo = false;
+            auto key = [&](int k) { return glfwGetKey(presenter.window(), k) == GLFW_PRESS ? 1.0 : 0.0; };
+            double fwd = key(GLFW_KEY_W) - key(GLFW_KEY_S), right = key(GLFW_KEY_D) - key(GLFW_KEY_A), up = key(GLFW_KEY_E) - key(GLFW_KEY_Q);
+            glm::dmat3 basis = glm::mat3_cast(camera.pose().orientation);
+            glm::dvec3 dir = fwd * -basis[2] + right * basis[0] + up * glm::dvec3(0.0, 1.0, 0.0);
+            double thrust = glm::length(dir) > 0.0 ? throttle : 0.0;
+            if (o.autopilot > 0.0) {
+                dir = -basis[2];
+                thrust = o.autopilot;
+            }
+            if (glm::length(dir) > 0.0) dir = glm::normalize(dir);
+            // Tests fly at a fixed 90 Hz so that runs repeat; people fly in real time.
+            camera.set_position(flight->update(camera.pose().position, dir, thrust, o.frames > 0 ? 1.0 / 90.0 : dt));
+            if (witness) witness->observe(camera.pose().position);
+
+            std::string error;
+            if (auto fresh = source.poll(error)) {
+                ctx.wait_idle();
+                playing = std::move(*fresh);
+                scene = scene_of(*playing.pack);
+                flight = make_flight();
+                status = fmt::format("reloaded {} in {:.0f} ms + {:.0f} ms pipelines", playing.pack->manifest.name, playing.compile_ms,
+                                     playing.pipelines_ms);
+                fmt::print("fgplay view: {}\n", status);
+                std::fflush(stdout);
+            } else if (!error.empty()) {
+                status = "compile error, the previous pack keeps playing";
+                fmt::print(stderr, "fgplay view: compile error (the previous pack keeps playing):\n{}\n", error);
+            }
+
+            stereo.world_scale = scene.world_scale;
+            StereoViews views = make_stereo_views(camera.pose(), fov_of(scene), fov_of(scene), stereo);
+            playing.executor->set_frame(make_gpu_frame(views, frame, frames / 60.0, scene.world_scale,
+                                                       static_cast<std::uint32_t>(frames)));
+            // Flying and mouse-look are both artificial motion: both drive the comfort vignette.
+            GpuScene scene_gpu = make_gpu_scene(playing.pack->manifest.scene);
+            if (scene_gpu.misc[2] > 0.0f) {
+                scene_gpu.misc[2] = static_cast<float>(comfort_vignette(
+                    glm::length(flight->locomotion().velocity()) / scene.world_scale, turn, scene_gpu.misc[2]));
+                playing.executor->set_scene(scene_gpu);
+            }
+            FrameStats stats = playing.executor->run();
+            ++frames;
+            const bool last_frame = o.frames > 0 && frames == o.frames;
+            Rgba8Image shot;
+            presenter.present(playing.executor->image("final.left"),
+                              side_by_side ? &playing.executor->image("final.right") : nullptr,
+                              last_frame && !o.screenshot.empty() ? &shot : nullptr);
+            std::string title = fmt::format("fgplay view - {} - {} - {} - clearance {:.3g}{}{}", playing.pack->manifest.name,
+                                            side_by_side ? "side by side" : "left eye", pass_times(stats),
+                                            flight->locomotion().guaranteed_clearance(camera.pose().position),
+                                            source.compiling() ? " - compiling" : "", status.empty() ? "" : " - " + status);
+            presenter.set_title(title);
+            if (frames == 1 || last_frame) {
+                fmt::print("frame {}: {}\n", frames, title);
+                std::fflush(stdout);   // a watcher reads the log while the preview runs
+            }
+            if (!shot.pixels.empty()) {
+                write_png(o.screenshot, shot);
+                fmt::print("screenshot: {} ({}x{})\n", o.screenshot, shot.width, shot.height);
+            }
+        }
+        flight.reset();
+        ctx.wait_idle();
+        if (witness) fmt::print("{}\n", witness->summary());
+        if (ctx.validation_enabled()) {
+            fmt::print("Vulkan validation: {} errors\n", ctx.validation_errors());
+            if (ctx.validation_errors() > 0) return 1;
+        }
+        return 0;
+    } catch (const vk::VulkanError& e) {
+        fmt::print(stderr, "fgplay view: Vulkan: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "fgplay view: {}\n", e.what());
+        return 1;
+    }
+}
+
+}  // namespace fg::desktop

@@ -1,0 +1,29 @@
+#pragma once
+// `fgplay view`: a pack (or a graph, recompiled on save with --watch) in a desktop window.
+// Mouse-look with the left button held, WASD/QE to fly, the scroll wheel for speed, B for the
+// side-by-side stereo pair, Esc to quit. The title bar shows per-pass GPU times.
+#include <cstdint>
+#include <string>
+
+#include "frame/frame_settings.h"
+
+namespace fg::desktop {
+
+struct ViewOptions {
+    std::string path;                     // .fgpack or graph .json
+    bool watch = false;
+    int frames = 0;                       // quit after this many frames (tests); 0 = until closed
+    std::uint32_t width = 256, height = 256;   // per eye
+    StereoMode stereo = StereoMode::PerEye;
+    bool side_by_side = false;
+    std::string screenshot;               // PNG of the window's last frame
+    bool validation = false;
+    std::string device;
+    // Scripted input for tests: fly forward at this throttle (1 = the distance-proportional speed).
+    double autopilot = 0.0;
+    bool check_collisions = false;        // watch the head with the CPU twin and report
+};
+
+int view(const ViewOptions& options);
+
+}  // namespace fg::desktop

@@ -1,0 +1,44 @@
+#include "desktop/view_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+
+namespace fg::desktop {
+
+void add_view_command(CLI::App& app, ViewCommand& c) {
+    c.command = app.add_subcommand("view", "play a pack, or a graph with --watch, in a desktop window");
+    c.command->add_option("pack", c.options.path, "shader pack (.fgpack) or graph (.json)")->required()->check(CLI::ExistingFile);
+    c.command->add_flag("--watch", c.options.watch, "recompile the graph when it is saved; errors do not stop the preview");
+    c.command->add_option("--frames", c.options.frames, "quit after this many frames");
+    c.command->add_option("--size", c.size, "per-eye size WxH (the window is two eyes wide)")->capture_default_str();
+    c.command->add_option("--stereo", c.stereo, "reproject | per-eye | naive")->capture_default_str();
+    c.command->add_flag("--side-by-side", c.options.side_by_side, "start with both eyes side by side (key B toggles)");
+    c.command->add_option("--screenshot", c.options.screenshot, "write the window's last frame to this PNG");
+    c.command->add_option("--autopilot", c.options.autopilot, "fly forward at this throttle, 1 = normal speed (tests)");
+    c.command->add_flag("--check-collisions", c.options.check_collisions,
+                        "watch the head with the CPU twin of the scene and report how close it came");
+    c.command->add_flag("--validation", c.options.validation, "Vulkan validation layer on; errors fail the run");
+    c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");
+}
+
+int ViewCommand::run() {
+    unsigned w = 0, h = 0;
+    if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > 8192 || h > 8192) {
+        fmt::print(stderr, "fgplay view: --size must look like 256x256\n");
+        return 2;
+    }
+    options.width = w;
+    options.height = h;
+    if (!parse_stereo_mode(stereo, options.stereo)) {
+        fmt::print(stderr, "fgplay view: --stereo is reproject, per-eye or naive, not '{}'\n", stereo);
+        return 2;
+    }
+    if (options.watch && std::filesystem::path(options.path).extension() != ".json") {
+        fmt::print(stderr, "fgplay view: --watch needs a graph (.json) to recompile, not a pack\n");
+        return 2;
+    }
+    return view(options);
+}
+
+}  // namespace fg::desktop

@@ -1,0 +1,84 @@
+#include "xr/frame_governor.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace fg::xr {
+
+std::string GovernorLevel::describe() const {
+    std::string s = fmt::format("scale {:.2f}, foveation {}", render_scale, foveation > 0.0 ? fmt::format("{:.2f}", foveation) : foveation < 0.0 ? "as the scene says" : "off");
+    for (const auto& [k, v] : knobs) s += fmt::format(", {} {}", k, v);
+    return s;
+}
+
+std::vector<GovernorLevel> governor_ladder(const PackManifest& m) {
+    struct Step {
+        double scale, foveation, epsilon_factor, max_steps_factor;
+    };
+    // Cheapest last. Resolution and foveation first: their error stays out of the fovea.
+    const Step steps[] = {{1.0, -1.0, 1.0, 1.0}, {1.0, 0.6, 1.0, 1.0}, {0.85, 0.6, 1.5, 1.0}, {0.7, 0.5, 2.0, 0.5}, {0.5, 0.4, 3.0, 0.375}};
+    std::vector<GovernorLevel> ladder;
+    for (const auto& st : steps) {
+        GovernorLevel level;
+        level.render_scale = st.scale;
+        level.foveation = st.foveation;
+        auto knob = [&](const char* name, double factor) {
+            const auto* spec = m.find_spec(name);
+            if (!spec || factor == 1.0) return;
+            double v = spec->value * factor;
+            if (spec->type == ValueType::Int) v = std::round(v);
+            if (spec->min) v = std::max(v, *spec->min);
+            if (spec->max) v = std::min(v, *spec->max);
+            level.knobs[name] = v;
+        };
+        knob("epsilon", st.epsilon_factor);
+        knob("max_steps", st.max_steps_factor);
+        ladder.push_back(std::move(level));
+    }
+    return ladder;
+}
+
+FrameGovernor::FrameGovernor(std::vector<GovernorLevel> ladder, const GovernorSettings& settings)
+    : ladder_(std::move(ladder)), settings_(settings) {
+    if (ladder_.empty()) ladder_.push_back({});
+}
+
+bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
+    message_.clear();
+    if (cooldown_ > 0) {
+        --cooldown_;
+        return false;
+    }
+    recent_.push_back(gpu_ms);
+    if (static_cast<int>(recent_.size()) > settings_.window) recent_.pop_front();
+    if (static_cast<int>(recent_.size()) < settings_.window || budget_ms <= 0.0) return false;
+    // The median: one slow frame (a pipeline compile, the OS) is not a trend.
+    std::vector<double> sorted(recent_.begin(), recent_.end());
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double mean = sorted[sorted.size() / 2];
+    over_ = mean > budget_ms ? over_ + 1 : 0;
+    under_ = mean < settings_.up_fraction * budget_ms ? under_ + 1 : 0;
+    int next = level_;
+    if (over_ >= settings_.down_after && !at_floor()) next = level_ + 1;
+    else if (under_ >= settings_.up_after && level_ > 0) next = level_ - 1;
+    if (next == level_) {
+        if (at_floor() && over_ >= settings_.down_after && !floor_reported_) {
+            floor_reported_ = true;
+            message_ = fmt::format("at the floor (level {}: {}), still {:.1f} ms of GPU time per frame for a {:.3g} ms budget",
+                                   level_, current().describe(), mean, budget_ms);
+        }
+        return false;
+    }
+    const char* why = next > level_ ? "over" : "well under";
+    level_ = next;
+    if (!at_floor()) floor_reported_ = false;
+    over_ = under_ = 0;
+    recent_.clear();
+    cooldown_ = settings_.cooldown;
+    message_ = fmt::format("level {} ({}): {:.1f} ms of GPU time per frame, {} the {:.3g} ms budget", level_, current().describe(),
+                           mean, why, budget_ms);
+    return true;
+}
+
+}  // namespace fg::xr

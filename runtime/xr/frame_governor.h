@@ -1,0 +1,61 @@
+#pragma once
+// Holding the frame rate: a headset shows a dropped frame as a judder, so the runtime keeps the
+// GPU time of a frame inside the display period (or --budget-ms). The governor reads the GPU
+// time of recent frames and moves along a ladder of settings, each cheaper and less accurate
+// than the one before (render scale, foveation, then the epsilon and step-cap knobs), the
+// trade-off `fgplay bench` measures. Hysteresis: it steps down only after several frames over
+// budget, steps up only after many frames well under it, and waits after each change, so the
+// image does not flicker between two settings.
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pack/manifest.h"
+
+namespace fg::xr {
+
+struct GovernorLevel {
+    double render_scale = 1.0;           // of the per-eye render size
+    double foveation = -1.0;             // fovea radius in half image heights, 0 = off, < 0 = as the scene says
+    std::map<std::string, double> knobs; // absolute knob values for this pack
+    std::string describe() const;
+};
+
+// The ladder for a pack: level 0 is the pack's own accuracy at full size; knobs the pack does
+// not have are left out, and values stay inside each knob's range.
+std::vector<GovernorLevel> governor_ladder(const PackManifest& manifest);
+
+struct GovernorSettings {
+    int window = 3;          // frames whose median GPU time is judged
+    int down_after = 2;      // consecutive averages over budget before stepping down
+    int up_after = 6;        // consecutive averages under `up_fraction` of the budget before stepping up
+    int cooldown = 3;        // frames ignored after a change (new pipelines, new sizes)
+    double up_fraction = 0.6;
+};
+
+class FrameGovernor {
+public:
+    FrameGovernor(std::vector<GovernorLevel> ladder, const GovernorSettings& settings = {});
+
+    // One frame's GPU time and budget; true when the level changed.
+    bool observe(double gpu_ms, double budget_ms);
+
+    int level() const { return level_; }
+    const GovernorLevel& current() const { return ladder_[static_cast<std::size_t>(level_)]; }
+    bool at_floor() const { return level_ + 1 == static_cast<int>(ladder_.size()); }
+    int levels() const { return static_cast<int>(ladder_.size()); }
+    // Why the last change happened, or that the floor cannot hold the budget (for the log).
+    const std::string& message() const { return message_; }
+
+private:
+    std::vector<GovernorLevel> ladder_;
+    GovernorSettings settings_;
+    int level_ = 0, over_ = 0, under_ = 0, cooldown_ = 0;
+    bool floor_reported_ = false;
+    std::deque<double> recent_;
+    std::string message_;
+};
+
+}  // namespace fg::xr

@@ -1,0 +1,413 @@
+#include "xr/xr_player.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "frame/frame_executor.h"
+#include "graph/scene_settings.h"
+#include "locomotion/collision_witness.h"
+#include "locomotion/comfort_vignette.h"
+#include "locomotion/probed_flight.h"
+#include "pack/pack_reader.h"
+#include "vk/vulkan_error.h"
+#include "xr/eye_swapchain.h"
+#include "xr/frame_governor.h"
+#include "xr/visibility_mask.h"
+#include "xr/session_lifecycle.h"
+#include "xr/vulkan_binding.h"
+#include "xr/xr_error.h"
+#include "xr/xr_instance.h"
+
+namespace fg::xr {
+
+namespace {
+
+glm::dvec3 to_glm(const XrVector3f& v) { return {v.x, v.y, v.z}; }
+glm::dquat to_glm(const XrQuaternionf& q) { return glm::dquat(q.w, q.x, q.y, q.z); }
+
+struct PlayStats {
+    int frames = 0;
+    double gpu_ms_sum = 0.0;
+    std::map<std::string, double> pass_ms_sum;
+};
+
+// One session: spaces, swapchains, the frame graph, and the frame loop.
+class XrPlayer {
+public:
+    XrPlayer(const OpenXrInstance& instance, const vk::Context& ctx, const Pack& pack, const XrPlayOptions& o)
+        : instance_(instance), ctx_(ctx), pack_(pack), options_(o) {
+        Diagnostics ignore;
+        scene_ = parse_scene_settings(&pack.manifest.scene, "/scene", ignore);
+        origin_ = look_at(scene_.camera.position, scene_.camera.target, scene_.camera.up);
+        scene_gpu_ = make_gpu_scene(pack.manifest.scene);
+
+        XrGraphicsBindingVulkan2KHR binding = graphics_binding(ctx);
+        XrSessionCreateInfo si{XR_TYPE_SESSION_CREATE_INFO};
+        si.next = &binding;
+        si.systemId = instance.system();
+        check(xrCreateSession(instance.handle(), &si, &session_), "xrCreateSession");
+
+        XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+        space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+        space.poseInReferenceSpace.orientation.w = 1.0f;
+        check(xrCreateReferenceSpace(session_, &space, &space_), "xrCreateReferenceSpace");
+
+        std::uint32_t count = 0;
+        check(xrEnumerateViewConfigurationViews(instance.handle(), instance.system(), XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO,
+                                                0, &count, nullptr),
+              "xrEnumerateViewConfigurationViews");
+        std::vector<XrViewConfigurationView> views(count, {XR_TYPE_VIEW_CONFIGURATION_VIEW});
+        check(xrEnumerateViewConfigurationViews(instance.handle(), instance.system(), XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO,
+                                                count, &count, views.data()),
+              "xrEnumerateViewConfigurationViews");
+        if (count != 2) throw XrError(XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED, "the headset's stereo view has no two eyes");
+
+        check(xrEnumerateSwapchainFormats(session_, 0, &count, nullptr), "xrEnumerateSwapchainFormats");
+        std::vector<std::int64_t> formats(count);
+        check(xrEnumerateSwapchainFormats(session_, count, &count, formats.data()), "xrEnumerateSwapchainFormats");
+        format_ = choose_swapchain_format(formats);
+        for (int eye = 0; eye < 2; ++eye)
+            swapchains_[eye] = std::make_unique<EyeSwapchain>(session_, format_, views[eye].recommendedImageRectWidth,
+                                                              views[eye].recommendedImageRectHeight);
+        base_width_ = o.width ? o.width : views[0].recommendedImageRectWidth;
+        base_height_ = o.height ? o.height : views[0].recommendedImageRectHeight;
+        frame_.width = base_width_;
+        frame_.height = base_height_;
+        governor_ = std::make_unique<FrameGovernor>(governor_ladder(pack.manifest));
+        frame_.stereo = o.stereo;
+        frame_.cone_levels = o.cone_levels;
+        frame_.knobs = o.knobs;
+        stereo_.width = frame_.width;
+        stereo_.height = frame_.height;
+        stereo_.world_scale = scene_.world_scale;
+        flight_ = std::make_unique<ProbedFlight>(ctx, pack, locomotion_settings(scene_.locomotion), scene_.world_scale);
+        if (o.check_collisions) witness_ = std::make_unique<CollisionWitness>(pack);
+    }
+
+    ~XrPlayer() {
+        flight_.reset();
+        executor_.reset();
+        for (auto& s : swapchains_) s.reset();
+        if (space_) xrDestroySpace(space_);
+        if (session_) xrDestroySession(session_);
+    }
+
+    int run() {
+        bool exit_requested = false;
+        while (true) {
+            SessionAction action = poll_events();
+            if (action == SessionAction::Exit) break;
+            if (action == SessionAction::Lost) {
+                fmt::print(stderr, "fgplay xr: the OpenXR session was lost (the headset was disconnected or the runtime "
+                                   "stopped); states: {}\n", fmt::join(lifecycle_.history(), " -> "));
+                return 2;
+            }
+            if (!lifecycle_.running()) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                continue;
+            }
+            frame();
+            if (options_.frames > 0 && stats_.frames >= options_.frames && !exit_requested) {
+                check(xrRequestExitSession(session_), "xrRequestExitSession");
+                exit_requested = true;
+            }
+        }
+        return 0;
+    }
+
+    const PlayStats& stats() const { return stats_; }
+    const SessionLifecycle& lifecycle() const { return lifecycle_; }
+    const FrameSettings& frame_settings() const { return frame_; }
+    std::int64_t format() const { return format_; }
+    const EyeSwapchain& swapchain(int eye) const { return *swapchains_[eye]; }
+    const VisibilityMask& visibility_mask(int eye) const { return masks_[eye]; }
+    const LensEllipse& lens(int eye) const { return lenses_[eye]; }
+    const CollisionWitness* witness() const { return witness_.get(); }
+    const FrameGovernor& governor() const { return *governor_; }
+
+private:
+    SessionAction poll_events() {
+        while (true) {
+            XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER};
+            XrResult r = check(xrPollEvent(instance_.handle(), &event), "xrPollEvent");
+            if (r == XR_EVENT_UNAVAILABLE) return SessionAction::None;
+            if (event.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) return lifecycle_.on_instance_loss();
+            if (event.type == XR_TYPE_EVENT_DATA_VISIBILITY_MASK_CHANGED_KHR) masks_dirty_ = true;
+            if (event.type != XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) continue;
+            const auto& changed = reinterpret_cast<const XrEventDataSessionStateChanged&>(event);
+            switch (lifecycle_.on_state(changed.state)) {
+                case SessionAction::Begin: {
+                    XrSessionBeginInfo bi{XR_TYPE_SESSION_BEGIN_INFO};
+                    bi.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+                    check(xrBeginSession(session_, &bi), "xrBeginSession");
+                    break;
+                }
+                case SessionAction::End: check(xrEndSession(session_), "xrEndSession"); break;
+                case SessionAction::Exit: return SessionAction::Exit;
+                case SessionAction::Lost: return SessionAction::Lost;
+                default: break;
+            }
+        }
+    }
+
+    void frame() {
+        XrFrameWaitInfo wi{XR_TYPE_FRAME_WAIT_INFO};
+        XrFrameState fs{XR_TYPE_FRAME_STATE};
+        check(xrWaitFrame(session_, &wi, &fs), "xrWaitFrame");
+        XrFrameBeginInfo bi{XR_TYPE_FRAME_BEGIN_INFO};
+        check(xrBeginFrame(session_, &bi), "xrBeginFrame");
+
+        XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
+        XrCompositionLayerProjectionView projection[2] = {{XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW},
+                                                          {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW}};
+        std::vector<const XrCompositionLayerBaseHeader*> layers;
+        if (fs.shouldRender && render(fs.predictedDisplayTime, fs.predictedDisplayPeriod, projection)) {
+            layer.space = space_;
+            layer.viewCount = 2;
+            layer.views = projection;
+            layers.push_back(reinterpret_cast<const XrCompositionLayerBaseHeader*>(&layer));
+        }
+        XrFrameEndInfo ei{XR_TYPE_FRAME_END_INFO};
+        ei.displayTime = fs.predictedDisplayTime;
+        ei.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+        ei.layerCount = static_cast<std::uint32_t>(layers.size());
+        ei.layers = layers.data();
+        check(xrEndFrame(session_, &ei), "xrEndFrame");
+    }
+
+    // Renders both eyes for the views predicted at `time`; false when tracking is lost.
+    bool render(XrTime time, XrDuration period_ns, XrCompositionLayerProjectionView* projection) {
+        XrViewLocateInfo li{XR_TYPE_VIEW_LOCATE_INFO};
+        li.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+        li.displayTime = time;
+        li.space = space_;
+        XrViewState vs{XR_TYPE_VIEW_STATE};
+        XrView views[2] = {{XR_TYPE_VIEW}, {XR_TYPE_VIEW}};
+        std::uint32_t count = 0;
+        check(xrLocateViews(session_, &li, &vs, 2, &count, views), "xrLocateViews");
+        const XrViewStateFlags needed = XR_VIEW_STATE_ORIENTATION_VALID_BIT | XR_VIEW_STATE_POSITION_VALID_BIT;
+        if ((vs.viewStateFlags & needed) != needed || count != 2) return false;
+
+        // Tracking space (metres, the LOCAL space) into the scene: the scene camera is the origin.
+        glm::dvec3 eye_l = to_glm(views[0].pose.position), eye_r = to_glm(views[1].pose.position);
+        HeadPose head;
+        head.orientation = origin_.orientation * glm::normalize(to_glm(views[0].pose.orientation));
+        head.position = origin_.position + offset_ + scene_.world_scale * (origin_.orientation * (0.5 * (eye_l + eye_r)));
+        // Gaze-directed flight moves the tracking space through the scene, as far as the probes allow.
+        const double dt = last_time_ ? static_cast<double>(time - last_time_) * 1e-9 : 0.0;
+        last_time_ = time;
+        glm::dvec3 gaze = glm::mat3_cast(head.orientation) * glm::dvec3(0.0, 0.0, -1.0);
+        glm::dvec3 moved = flight_->update(head.position, gaze, options_.fly, dt);
+        offset_ += moved - head.position;
+        head.position = moved;
+        if (witness_) witness_->observe(head.position);
+        stereo_.ipd_m = glm::length(eye_r - eye_l);
+        auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
+        StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
+        if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {
+            rebuild_ = false;
+            masks_dirty_ = true;
+            ctx_.wait_idle();
+            executor_.reset();
+            executor_ = std::make_unique<FrameExecutor>(ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width,
+                                                                                      sv.centre.height));
+            centre_width_ = sv.centre.width;
+            centre_height_ = sv.centre.height;
+        }
+        if (masks_dirty_) update_lens_masks(sv);
+        if (first_time_ == 0) first_time_ = time;
+        GpuFrame gpu = make_gpu_frame(sv, frame_, static_cast<double>(time - first_time_) * 1e-9, scene_.world_scale,
+                                      static_cast<std::uint32_t>(stats_.frames));
+        // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
+        // pixels outside it are never marched.
+        for (int eye = 0; eye < 2; ++eye)
+            if (lenses_[eye].radius_u > 0.0)
+                gpu.views[eye].lens = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v),
+                                       static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
+        executor_->set_frame(gpu);
+        // Flight (not the tracked head) drives the comfort vignette, where the scene has one.
+        if (scene_gpu_.misc[2] > 0.0f) {
+            GpuScene sc = scene_gpu_;
+            sc.misc[2] = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / scene_.world_scale, 0.0,
+                                                             scene_gpu_.misc[2]));
+            executor_->set_scene(sc);
+        }
+        FrameStats fs = executor_->run();
+        if (options_.governor) govern(fs, period_ns);
+        swapchains_[0]->present(ctx_, executor_->image("final.left"));
+        swapchains_[1]->present(ctx_, executor_->image("final.right"));
+        for (int eye = 0; eye < 2; ++eye) {
+            projection[eye].pose = views[eye].pose;
+            projection[eye].fov = views[eye].fov;
+            projection[eye].subImage.swapchain = swapchains_[eye]->handle();
+            projection[eye].subImage.imageRect = {{0, 0},
+                                                  {static_cast<std::int32_t>(swapchains_[eye]->width()),
+                                                   static_cast<std::int32_t>(swapchains_[eye]->height())}};
+            projection[eye].subImage.imageArrayIndex = 0;
+        }
+        ++stats_.frames;
+        if (auto it = fs.gpu_ms.find("frame"); it != fs.gpu_ms.end()) stats_.gpu_ms_sum += it->second;
+        for (const auto& [pass, ms] : fs.gpu_ms) stats_.pass_ms_sum[pass] += ms;
+        return true;
+    }
+
+    // Reads this frame's GPU time; a new level takes effect from the next frame (new sizes and
+    // pipelines), logged with its reason.
+    void govern(const FrameStats& fs, XrDuration period_ns) {
+        auto it = fs.gpu_ms.find("frame");
+        if (it == fs.gpu_ms.end()) return;
+        double budget = options_.budget_ms > 0.0 ? options_.budget_ms : static_cast<double>(period_ns) * 1e-6;
+        bool changed = governor_->observe(it->second, budget);
+        if (!governor_->message().empty()) {
+            fmt::print("governor: {}\n", governor_->message());
+            std::fflush(stdout);
+        }
+        if (!changed) return;
+        const GovernorLevel& level = governor_->current();
+        frame_.width = std::max(8u, static_cast<std::uint32_t>(std::lround(base_width_ * level.render_scale)));
+        frame_.height = std::max(8u, static_cast<std::uint32_t>(std::lround(base_height_ * level.render_scale)));
+        frame_.foveation = level.foveation;
+        frame_.knobs = options_.knobs;
+        for (const auto& [k, v] : level.knobs) frame_.knobs[k] = v;
+        stereo_.width = frame_.width;
+        stereo_.height = frame_.height;
+        rebuild_ = true;
+    }
+
+    void update_lens_masks(const StereoViews& sv) {
+        masks_dirty_ = false;
+        if (!instance_.has_visibility_mask()) return;
+        auto get = instance_.function<PFN_xrGetVisibilityMaskKHR>("xrGetVisibilityMaskKHR");
+        const View* eyes[2] = {&sv.left, &sv.right};
+        for (std::uint32_t eye = 0; eye < 2; ++eye) {
+            XrVisibilityMaskKHR mask{XR_TYPE_VISIBILITY_MASK_KHR};
+            check(get(session_, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, eye, XR_VISIBILITY_MASK_TYPE_HIDDEN_TRIANGLE_MESH_KHR,
+                      &mask),
+                  "xrGetVisibilityMaskKHR");
+            std::vector<XrVector2f> vertices(mask.vertexCountOutput);
+            std::vector<std::uint32_t> indices(mask.indexCountOutput);
+            mask.vertexCapacityInput = mask.vertexCountOutput;
+            mask.vertices = vertices.data();
+            mask.indexCapacityInput = mask.indexCountOutput;
+            mask.indices = indices.data();
+            check(get(session_, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, eye, XR_VISIBILITY_MASK_TYPE_HIDDEN_TRIANGLE_MESH_KHR,
+                      &mask),
+                  "xrGetVisibilityMaskKHR");
+            std::vector<float> flat;
+            for (const auto& v : vertices) flat.insert(flat.end(), {v.x, v.y});
+            masks_[eye] = rasterize_hidden_triangles(flat, indices, eyes[eye]->fov, frame_.width, frame_.height);
+            lenses_[eye] = enclosing_lens(masks_[eye], lens_ellipse(*eyes[eye]));
+        }
+    }
+
+    const OpenXrInstance& instance_;
+    const vk::Context& ctx_;
+    const Pack& pack_;
+    XrPlayOptions options_;
+    SceneSettings scene_;
+    HeadPose origin_;
+    GpuScene scene_gpu_{};
+    XrSession session_ = XR_NULL_HANDLE;
+    XrSpace space_ = XR_NULL_HANDLE;
+    std::int64_t format_ = 0;
+    std::unique_ptr<EyeSwapchain> swapchains_[2];
+    FrameSettings frame_;
+    StereoSettings stereo_;
+    std::unique_ptr<FrameExecutor> executor_;
+    std::uint32_t centre_width_ = 0, centre_height_ = 0;
+    XrTime first_time_ = 0, last_time_ = 0;
+    glm::dvec3 offset_{0.0};
+    std::unique_ptr<ProbedFlight> flight_;
+    std::unique_ptr<FrameGovernor> governor_;
+    std::uint32_t base_width_ = 0, base_height_ = 0;
+    bool rebuild_ = false;
+    std::unique_ptr<CollisionWitness> witness_;
+    SessionLifecycle lifecycle_;
+    VisibilityMask masks_[2];
+    LensEllipse lenses_[2];
+    bool masks_dirty_ = true;
+    PlayStats stats_;
+};
+
+}  // namespace
+
+int play_xr(const XrPlayOptions& o) {
+    Diagnostics diag;
+    auto pack = read_pack_file(o.pack, diag);
+    if (!pack) {
+        fmt::print(stderr, "{}", diag.format(o.pack));
+        return 1;
+    }
+    try {
+        OpenXrInstance instance;
+        fmt::print("OpenXR runtime: {}, system: {}\n", instance.runtime_name(), instance.system_name());
+        vk::ContextOptions co;
+        co.validation = o.validation;
+        co.device = o.device;
+        co.require_timestamps = false;
+        co.hooks = vulkan_creation_hooks(instance);
+        std::size_t vk_errors = 0;
+        int rc = 0;
+        {
+            vk::Context ctx(co);
+            fmt::print("Vulkan device: {}\n", ctx.device_name());
+            {
+                XrPlayer player(instance, ctx, *pack, o);
+                rc = player.run();
+                const auto& s = player.stats();
+                const auto& f = player.frame_settings();
+                fmt::print("frames: {} ({} stereo, render {}x{} per eye, swapchains {}x{} format {})\n", s.frames,
+                           stereo_mode_name(f.stereo), f.width, f.height, player.swapchain(0).width(),
+                           player.swapchain(0).height(), vk::format_name(static_cast<VkFormat>(player.format())));
+                if (s.frames > 0 && !s.pass_ms_sum.empty()) {
+                    std::string passes;
+                    for (const auto& [pass, ms] : s.pass_ms_sum) passes += fmt::format(" {} {:.2f} ms,", pass, ms / s.frames);
+                    fmt::print("mean GPU time per frame:{}\n", passes.substr(0, passes.size() - 1));
+                }
+                fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
+                if (player.witness()) fmt::print("{}\n", player.witness()->summary());
+                if (o.governor)
+                    fmt::print("governor: ended at level {} of {} ({})\n", player.governor().level(),
+                               player.governor().levels() - 1, player.governor().current().describe());
+                if (instance.has_visibility_mask()) {
+                    auto skipped = [&](int eye) {
+                        const auto& m = player.visibility_mask(eye);
+                        auto v = visible_pixels(player.lens(eye), m.width, m.height);
+                        return 100.0 * static_cast<double>(std::count(v.begin(), v.end(), std::uint8_t{0})) / static_cast<double>(v.size());
+                    };
+                    fmt::print("lens mask (XR_KHR_visibility_mask): {} + {} hidden triangles hide {:.1f} % / {:.1f} % of the "
+                               "pixels; the enclosing lens ellipse skips {:.1f} % / {:.1f} %\n",
+                               player.visibility_mask(0).triangles, player.visibility_mask(1).triangles,
+                               100.0 * player.visibility_mask(0).hidden_fraction(),
+                               100.0 * player.visibility_mask(1).hidden_fraction(), skipped(0), skipped(1));
+                }
+                else
+                    fmt::print("lens mask: the runtime has no XR_KHR_visibility_mask\n");
+            }
+            ctx.wait_idle();
+            vk_errors = ctx.validation_enabled() ? ctx.validation_errors() : 0;
+            if (ctx.validation_enabled()) fmt::print("Vulkan validation: {} errors\n", vk_errors);
+        }
+        const auto& xr_log = instance.messages();
+        fmt::print("OpenXR messages: {} errors, {} warnings\n", xr_log.errors, xr_log.warnings);
+        if (rc == 0 && (vk_errors > 0 || xr_log.errors > 0)) rc = 1;
+        return rc;
+    } catch (const XrError& e) {
+        fmt::print(stderr, "fgplay xr: {}\n", e.what());
+        return 1;
+    } catch (const vk::VulkanError& e) {
+        fmt::print(stderr, "fgplay xr: Vulkan: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "fgplay xr: {}\n", e.what());
+        return 1;
+    }
+}
+
+}  // namespace fg::xr

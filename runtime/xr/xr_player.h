@@ -1,0 +1,31 @@
+#pragma once
+// `fgplay xr`: a pack played in an OpenXR headset. The session's predicted display time and view
+// poses drive the frame graph; each eye's final image is blitted into that eye's swapchain and
+// submitted as a projection layer.
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "frame/frame_settings.h"
+
+namespace fg::xr {
+
+struct XrPlayOptions {
+    std::string pack;
+    int frames = 0;                      // end the session after this many frames; 0 = when the runtime ends it
+    std::uint32_t width = 0, height = 0; // render size per eye; 0 = the runtime's recommended size
+    StereoMode stereo = StereoMode::PerEye;
+    std::uint32_t cone_levels = 5;
+    bool validation = false;             // Vulkan validation; errors (and OpenXR validation errors) fail the run
+    std::string device;
+    std::map<std::string, double> knobs;
+    bool governor = true;                // hold the frame budget by moving along the accuracy ladder
+    double budget_ms = 0.0;              // 0 = the display period the runtime predicts
+    double fly = 0.0;                    // gaze-directed flight at this throttle (1 = normal speed)
+    bool check_collisions = false;       // watch the head with the CPU twin and report
+};
+
+// Exit codes: 0 clean, 1 error (no runtime, validation errors, ...), 2 the session was lost.
+int play_xr(const XrPlayOptions& options);
+
+}  // namespace fg::xr

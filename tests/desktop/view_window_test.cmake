@@ -1,0 +1,39 @@
+# fgplay view in a real X11 window (Xvfb): a few frames side by side, a screenshot of what the
+# window presented, and no Vulkan validation errors.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+if(CASE STREQUAL "flight")
+  # Autopilot straight ahead at 30 times the normal speed: the probes must stop it at the surface,
+  # a head radius (0.05) away.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                          ${XVFB_RUN} -a -s "-screen 0 320x240x24"
+                          ${FGPLAY} view ${PACK} --frames 60 --size 48x48 --autopilot 30 --check-collisions --validation
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "Vulkan validation: 0 errors")
+    message(FATAL_ERROR "fgplay view failed (${rc})")
+  endif()
+  if(NOT out MATCHES "closest head distance 0\\.0[5-9][0-9]* over 60 frames, 0 frames inside a surface")
+    message(FATAL_ERROR "the flight entered the fractal or stopped far from it")
+  endif()
+  return()
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                        ${XVFB_RUN} -a -s "-screen 0 640x480x24"
+                        ${FGPLAY} view ${PACK} --frames 4 --size 96x96 --side-by-side --screenshot ${WORK}/window.png --validation
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fgplay view exited with ${rc}")
+endif()
+if(NOT out MATCHES "frame 4: fgplay view - Mandelbulb - side by side - GPU" OR NOT out MATCHES "Vulkan validation: 0 errors")
+  message(FATAL_ERROR "no frames with GPU times in the title, or validation errors")
+endif()
+if(NOT out MATCHES "screenshot: .*window.png \\(192x96\\)")
+  message(FATAL_ERROR "no screenshot of the two-eye window")
+endif()
+# A flat image compresses to a few hundred bytes; the fractal does not.
+file(SIZE ${WORK}/window.png bytes)
+if(bytes LESS 3000)
+  message(FATAL_ERROR "the window looks blank (${bytes} bytes of PNG)")
+endif()

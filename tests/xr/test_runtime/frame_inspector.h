@@ -1,0 +1,61 @@
+#pragma once
+// Reads back the swapchain images fgplay submits (on fgplay's own VkDevice and queue, as a
+// compositor would) and judges them: the right size and format, not blank, and the two eyes
+// different.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace fgxrt {
+
+struct EyeImage {
+    std::uint32_t width = 0, height = 0;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::vector<std::uint8_t> rgba;   // 4 bytes per pixel as stored (BGRA stays BGRA)
+};
+
+struct FrameVerdict {
+    std::vector<std::string> problems;
+    double mean_luma[2] = {0.0, 0.0};
+    double eyes_differ_fraction = 0.0;
+};
+
+// Blank: every channel within 4 levels over the whole image. The eyes differ when at least 1 %
+// of the pixels differ by more than 2 levels in some channel.
+FrameVerdict judge_stereo_pair(const EyeImage& left, const EyeImage& right);
+
+class FrameInspector {
+public:
+    FrameInspector(VkPhysicalDevice physical, VkDevice device, std::uint32_t queue_family, std::uint32_t queue_index);
+    ~FrameInspector();
+    FrameInspector(const FrameInspector&) = delete;
+    FrameInspector& operator=(const FrameInspector&) = delete;
+
+    // Puts a new swapchain image into COLOR_ATTACHMENT_OPTIMAL, the layout apps receive.
+    void prepare(VkImage image);
+    // Copies an image in COLOR_ATTACHMENT_OPTIMAL (and leaves it there); waits for the copy.
+    EyeImage read(VkImage image, VkFormat format, std::uint32_t width, std::uint32_t height);
+
+private:
+    void submit(const std::vector<VkImageMemoryBarrier>& before, VkImage copy_from, std::uint32_t width,
+                std::uint32_t height, const std::vector<VkImageMemoryBarrier>& after);
+    void ensure_buffer(VkDeviceSize size);
+
+    VkPhysicalDevice physical_;
+    VkDevice device_;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize buffer_size_ = 0;
+    void* mapped_ = nullptr;
+};
+
+// A PNG of an eye image, for looking at what the runtime received ($FG_XR_TEST_DUMP).
+void write_eye_png(const std::string& path, const EyeImage& image);
+
+}  // namespace fgxrt

@@ -1,0 +1,86 @@
+#pragma once
+// The test runtime's objects behind the OpenXR handles, and the state that its report covers.
+// One instance at a time is enough for fgplay.
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+#define XR_NO_PROTOTYPES
+#define XR_USE_GRAPHICS_API_VULKAN
+#include <vulkan/vulkan.h>
+#include <openxr/openxr.h>
+#include <openxr/openxr_platform.h>
+
+#include "frame_inspector.h"
+#include "pose_script.h"
+#include "runtime_report.h"
+
+namespace fgxrt {
+
+inline constexpr XrSystemId kSystemId = 1;
+inline constexpr XrTime kPeriodNs = 11'111'111;   // 90 Hz
+
+struct Swapchain;
+
+struct Session {
+    VkInstance vk_instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    std::uint32_t queue_family = 0, queue_index = 0;
+    XrSessionState state = XR_SESSION_STATE_UNKNOWN;
+    bool running = false, exit_requested = false, lost = false;
+    XrTime begin_time = 0, next_display_time = 0, waited_display_time = 0;
+    bool frame_waited = false, frame_begun = false;
+    std::vector<std::unique_ptr<Swapchain>> swapchains;
+    std::unique_ptr<FrameInspector> inspector;
+};
+
+struct Swapchain {
+    Session* session = nullptr;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::uint32_t width = 0, height = 0;
+    std::vector<VkImage> images;
+    std::vector<VkDeviceMemory> memory;
+    std::uint32_t next = 0;
+    std::int32_t acquired = -1, waited = -1, last_released = -1;
+};
+
+struct Space {
+    Session* session = nullptr;
+    XrReferenceSpaceType type = XR_REFERENCE_SPACE_TYPE_LOCAL;
+    XrPosef pose{};
+};
+
+struct Instance {
+    bool vulkan2 = false, visibility_mask = false;
+    bool requirements_queried = false;
+    std::deque<XrEventDataBuffer> events;
+    std::vector<std::unique_ptr<Session>> sessions;
+    std::vector<std::unique_ptr<Space>> spaces;
+    PoseScript poses;
+    EventScript script;
+    RuntimeReport report;
+    XrTime clock = 1'000'000'000;
+    std::uint32_t recommended_width = 96, recommended_height = 96;
+};
+
+// The live instance (null when none), and handle lookups that return null for a stale handle.
+Instance* instance(XrInstance handle);
+Instance* live_instance();
+Session* session(XrSession handle);
+Swapchain* swapchain(XrSwapchain handle);
+Space* space(XrSpace handle);
+
+void push_state(Session& s, XrSessionState state);
+
+// The per-file function tables that the proc-address lookup searches.
+struct NamedFunction {
+    const char* name;
+    PFN_xrVoidFunction function;
+};
+extern const std::vector<NamedFunction> kInstanceFunctions;
+extern const std::vector<NamedFunction> kSessionFunctions;
+
+}  // namespace fgxrt

@@ -1,0 +1,39 @@
+#include "runtime_report.h"
+
+#include <cstdlib>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace fgxrt {
+
+void RuntimeReport::fail(int frame, const std::string& what) {
+    if (failures.size() < 20) failures.push_back("frame " + std::to_string(frame) + ": " + what);
+}
+
+void RuntimeReport::write() const {
+    const char* path = std::getenv("FG_XR_TEST_REPORT");
+    if (!path || !*path) return;
+    nlohmann::json j;
+    j["runtime"] = "Fractograph test runtime";
+    j["frames_waited"] = frames_waited;
+    j["frames_ended"] = frames_ended;
+    j["frames_with_layers"] = frames_with_layers;
+    j["frames_checked"] = frames_checked;
+    j["frames_good"] = frames_good;
+    j["failures"] = failures;
+    j["session_states"] = session_states;
+    j["swapchains"] = swapchains;
+    j["visibility_mask_calls"] = visibility_mask_calls;
+    j["vulkan_instance_created_by_runtime"] = vulkan_instance_created;
+    j["vulkan_device_created_by_runtime"] = vulkan_device_created;
+    j["exit_requested"] = exit_requested;
+    j["session_ended"] = session_ended;
+    j["session_destroyed"] = session_destroyed;
+    j["instance_destroyed"] = instance_destroyed;
+    j["last_frame"] = {{"mean_luma_left", mean_luma_left}, {"mean_luma_right", mean_luma_right},
+                       {"eyes_differ_fraction", eyes_differ_fraction}};
+    std::ofstream(path) << j.dump(2) << "\n";
+}
+
+}  // namespace fgxrt

@@ -1,0 +1,24 @@
+#pragma once
+// What the test runtime saw, written as JSON to $FG_XR_TEST_REPORT when the instance is
+// destroyed (and after each session ends), so a test can read it.
+#include <string>
+#include <vector>
+
+namespace fgxrt {
+
+struct RuntimeReport {
+    int frames_waited = 0, frames_ended = 0, frames_with_layers = 0, frames_checked = 0, frames_good = 0;
+    std::vector<std::string> failures;   // the first ones, each naming its frame
+    std::vector<std::string> session_states;
+    std::vector<std::string> swapchains;  // "R8G8B8A8_UNORM 96x96"
+    int visibility_mask_calls = 0;
+    bool vulkan_instance_created = false, vulkan_device_created = false;
+    bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;
+    double mean_luma_left = 0.0, mean_luma_right = 0.0;   // of the last checked frame
+    double eyes_differ_fraction = 0.0;                     // of the last checked frame
+
+    void fail(int frame, const std::string& what);
+    void write() const;   // to $FG_XR_TEST_REPORT, if set
+};
+
+}  // namespace fgxrt
