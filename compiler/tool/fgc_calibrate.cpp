@@ -1,0 +1,148 @@
+// fgc calibrate: measure the conservative-derivative bias a graph's fractals need by bubble
+// search on the CPU twin, and write the smallest safe bias into the graph.
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "analysis/bubble_search.h"
+#include "analysis/lipschitz_bound.h"
+#include "compiler.h"
+#include "fgc_commands.h"
+#include "graph/graph_text_writer.h"
+#include "graph/node_library.h"
+
+namespace fg {
+std::span<const EmbeddedFile> embedded_node_files();
+}
+
+namespace fg::fgc {
+
+namespace {
+
+void progress_bar(std::size_t done, std::size_t total) {
+    constexpr int kWidth = 32;
+    int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
+    fmt::print(stderr, "\rbubble search [{}{}] {:3d}% {}/{} samples", std::string(static_cast<std::size_t>(filled), '#'),
+               std::string(static_cast<std::size_t>(kWidth - filled), '.'), total ? 100 * done / total : 100, done, total);
+    if (done == total) fmt::print(stderr, "\n");
+}
+
+// The biases the table shows, within the knob's range.
+std::vector<double> bias_grid(double max_bias) {
+    std::vector<double> out;
+    for (double b : {0.0, 0.5, 0.75, 0.9, 1.0, 1.05, 1.1, 1.25, 1.5, 2.0, 3.0, 4.0})
+        if (b <= max_bias + 1e-12) out.push_back(b);
+    return out;
+}
+
+double knob_max(const IrGraph& ir, const std::string& knob) {
+    int idx = ir.find(knob.substr(knob.find('.') + 1));
+    const auto& n = ir.nodes[static_cast<std::size_t>(idx)];
+    for (const auto& port : n.def->inputs)
+        if (port.knob == "bias" && port.max) return *port.max;
+    return 4.0;
+}
+
+}  // namespace
+
+int calibrate(const Common& c, const std::string& graph, const CalibrateOptions& o) {
+    Diagnostics diag;
+    NodeLibrary lib = NodeLibrary::from_files(embedded_node_files(), diag);
+    for (const auto& folder : c.node_folders) lib.load_folder(folder, diag);
+    auto fail = [&] {
+        fmt::print(stderr, "{}", diag.format(graph));
+        return 1;
+    };
+    std::ifstream in(graph, std::ios::binary);
+    if (!in) {
+        fmt::print(stderr, "{}: cannot open\n", graph);
+        return 1;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    auto ir = load_and_lower(text.str(), lib, diag);
+    if (!ir) return fail();
+    auto knobs = BubbleSearch::bias_knobs(*ir);
+    if (knobs.empty()) {
+        fmt::print("{}: no fractal with a running derivative and a literal bias: nothing to calibrate\n", graph);
+        return 0;
+    }
+    auto ev = CpuEvaluator::create(*ir, diag);
+    if (!ev) return fail();
+    double step_scale = 1.0 / analyse_lipschitz(*ir, diag).bound;
+    double max_bias = 4.0;
+    for (const auto& k : knobs) max_bias = std::min(max_bias, knob_max(*ir, k));
+
+    BubbleSearchSettings s;
+    s.samples = o.samples;
+    s.seed = o.seed;
+    s.threads = o.threads;
+    s.reach_bias = 0.0;
+    s.reach_step = step_scale;
+    BubbleSearch search(*ev, s);
+    auto start = std::chrono::steady_clock::now();
+    search.run(o.quiet ? std::function<void(std::size_t, std::size_t)>{} : progress_bar);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // The summary: overshoot rate for each bias (rows) and step multiplier (columns).
+    const std::vector<double> steps{1.0, 0.9, 0.8, 0.7, 0.5};
+    fmt::print("{}: {} exterior samples (seed {}), {} CPU evaluations in {:.1f} s; step scale 1/L = {:.4g}; bias knobs: {}\n",
+               graph, s.samples - static_cast<int>(search.rejected_interior()), s.seed, search.evaluations(), seconds,
+               step_scale, fmt::join(knobs, ", "));
+    fmt::print("overshoot rate (samples whose step reaches an interior point), by bias and step multiplier:\n");
+    fmt::print("  {:>6} |", "bias");
+    for (double m : steps) fmt::print(" {:>13}", fmt::format("step x{:.2g}", m));
+    fmt::print(" | worst step at x1\n  -------+{}-+------------------\n", std::string(steps.size() * 14, '-'));
+    for (double b : bias_grid(max_bias)) {
+        fmt::print("  {:>6.3g} |", b);
+        for (double m : steps) {
+            OvershootCount k = search.count(b, step_scale * m);
+            fmt::print(" {:>13}", fmt::format("{:.2f}% ({})", 100.0 * k.rate(), k.overshoots));
+        }
+        OvershootCount full = search.count(b, step_scale);
+        fmt::print(" | {}\n", full.overshoots ? fmt::format("{:.3f}x the free distance", full.worst) : std::string("-"));
+    }
+    auto safe = search.smallest_safe_bias(step_scale, 0.0, max_bias);
+    if (!safe) {
+        for (double m : steps)
+            if (!search.count(max_bias, step_scale * m).overshoots) {
+                fmt::print(stderr, "{}: even bias {} overshoots at step scale {:.4g}; step x{:.2g} does not\n", graph,
+                           max_bias, step_scale, m);
+                return 1;
+            }
+        fmt::print(stderr, "{}: even bias {} with step x0.5 overshoots: the distance estimate is not usable\n", graph,
+                   max_bias);
+        return 1;
+    }
+    OvershootCount worst_off = search.count(0.0, step_scale);
+    fmt::print("smallest bias without overshoot in {} samples: {:.2f} (bias 0 overshoots {} times, {:.2f}%, worst step "
+               "{:.2f}x the free distance)\n",
+               s.samples - static_cast<int>(search.rejected_interior()), *safe, worst_off.overshoots,
+               100.0 * worst_off.rate(), worst_off.worst);
+    if (o.dry_run) return 0;
+
+    auto doc = nlohmann::ordered_json::parse(text.str());
+    double value = std::round(*safe * 100.0) / 100.0;
+    std::vector<std::string> written;
+    for (auto& node : doc["nodes"]) {
+        std::string id = node.value("id", "");
+        for (const auto& k : knobs)
+            if (k == "bias." + id) {
+                node["inputs"]["bias"] = value;
+                written.push_back(id);
+            }
+    }
+    std::ofstream out(graph, std::ios::binary | std::ios::trunc);
+    out << format_graph_text(doc);
+    if (!out) {
+        fmt::print(stderr, "{}: cannot write\n", graph);
+        return 1;
+    }
+    fmt::print("wrote bias {:.2f} into {} (node{} {})\n", value, graph, written.size() == 1 ? "" : "s",
+               fmt::join(written, ", "));
+    return 0;
+}
+
+}  // namespace fg::fgc
