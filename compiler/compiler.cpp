@@ -112,7 +112,8 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     EffectSet effects = find_effects(*ir);
     result.lipschitz = analyse_lipschitz(*ir, diag);
     if (diag.has_errors()) return std::nullopt;
-    auto spec = assign_specialization(*ir, 1.0 / result.lipschitz.bound);
+    // The calibrated step factor (fgc calibrate) shortens every step beyond 1 / L.
+    auto spec = assign_specialization(*ir, ir->scene.step_factor / result.lipschitz.bound);
     result.times.analysis_ms = clock.lap();
 
     PackManifest& m = result.manifest;

@@ -75,6 +75,9 @@ void BubbleSearch::search_ball(CpuEvaluator& ev, BubbleSample& s, std::uint64_t 
     const glm::dvec3 centre = ir.scene.bounds_center;
     const double radius = ir.scene.bounds_radius;
     double d = 0.0;
+    // Every other sample is carried towards the surface: a march spends its steps close to it,
+    // where estimates overshoot, and uniform points in large bounds seldom land there.
+    const bool near_surface = (stream & 1u) != 0;
     for (int attempt = 0; attempt < 64; ++attempt) {
         // A uniform point of the bounds sphere and uniform parameter values.
         glm::dvec3 u;
@@ -91,8 +94,36 @@ void BubbleSearch::search_ball(CpuEvaluator& ev, BubbleSample& s, std::uint64_t 
             s.params.push_back(c);
         }
         d = distance_at(ev, s, settings_.reach_bias);
-        if (d > 0.0 && std::isfinite(d)) break;
-        d = 0.0;
+        if (!(d > 0.0 && std::isfinite(d))) {
+            d = 0.0;
+            continue;
+        }
+        if (near_surface) {
+            // March from there roughly towards the centre of the bounds (where scenes put their
+            // fractal; an infinite floor would otherwise take every walk) with short, safe steps
+            // (the largest bias, a quarter step) until the distance falls below a target spread
+            // log-uniformly over four decades below the bounds radius.
+            const double target = radius * std::pow(10.0, -1.0 - 4.0 * rng.uniform());
+            glm::dvec3 inward = centre - s.p;
+            double len = glm::length(inward);
+            const glm::dvec3 dir = glm::normalize((len > 0.0 ? inward / len : glm::dvec3(0.0)) + 0.7 * rng.unit_vector());
+            BubbleSample walker = s;
+            for (int step = 0; step < 200; ++step) {
+                double safe = distance_at(ev, walker, settings_.walk_bias);
+                if (!(safe > 0.0) || glm::length(walker.p - centre) > radius) break;
+                if (safe < target) {
+                    s.p = walker.p;
+                    d = distance_at(ev, s, settings_.reach_bias);
+                    break;
+                }
+                walker.p += dir * (0.25 * safe);
+            }
+            if (!(d > 0.0 && std::isfinite(d))) {
+                d = 0.0;
+                continue;
+            }
+        }
+        break;
     }
     if (d <= 0.0) return;   // no exterior point found: the sample stays empty (reach 0)
     s.reach = std::min(d * settings_.reach_step, 4.0 * radius);

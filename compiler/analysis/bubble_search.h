@@ -1,7 +1,8 @@
 #pragma once
 // Stochastic bubble search (the calibration behind `fgc calibrate`): a distance estimate d at p
 // promises that the ball of radius d around p holds no surface. Sample points over the scene
-// bounds and the graph's parameter ranges, search each point's ball for interior points on the CPU
+// bounds (half uniform, half walked towards the surface) and the graph's parameter ranges,
+// search each point's ball for interior points on the CPU
 // twin (double precision) and count the points whose promise is broken: the overshoots. The
 // search runs once per sample; the rate for any bias and step scale then costs one evaluation per
 // sample, because the guard only rescales the estimate and never moves the surface (dr > 0 keeps
@@ -26,6 +27,7 @@ struct BubbleSearchSettings {
     int radial_steps = 16;           // points tested along each ray before bisection
     double reach_bias = 0.0;         // the search covers the balls of every bias >= this one
     double reach_step = 1.0;         // ... and every step multiplier <= this one
+    double walk_bias = 4.0;          // bias of the safe walk that carries samples to the surface
     int threads = 2;
 };
 

@@ -1,7 +1,9 @@
 // fgc calibrate: measure the conservative-derivative bias a graph's fractals need by bubble
 // search on the CPU twin, and write the smallest safe bias into the graph.
 #include <chrono>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
@@ -32,7 +34,7 @@ void progress_bar(std::size_t done, std::size_t total) {
 // The biases the table shows, within the knob's range.
 std::vector<double> bias_grid(double max_bias) {
     std::vector<double> out;
-    for (double b : {0.0, 0.5, 0.75, 0.9, 1.0, 1.05, 1.1, 1.25, 1.5, 2.0, 3.0, 4.0})
+    for (double b : {0.0, 0.5, 0.75, 0.9, 1.0, 1.05, 1.1, 1.25, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0})
         if (b <= max_bias + 1e-12) out.push_back(b);
     return out;
 }
@@ -71,8 +73,9 @@ int calibrate(const Common& c, const std::string& graph, const CalibrateOptions&
     }
     auto ev = CpuEvaluator::create(*ir, diag);
     if (!ev) return fail();
+    // The search judges the steps the march would take without a calibrated factor: 1 / L.
     double step_scale = 1.0 / analyse_lipschitz(*ir, diag).bound;
-    double max_bias = 4.0;
+    double max_bias = 1e9;
     for (const auto& k : knobs) max_bias = std::min(max_bias, knob_max(*ir, k));
 
     BubbleSearchSettings s;
@@ -104,23 +107,43 @@ int calibrate(const Common& c, const std::string& graph, const CalibrateOptions&
         OvershootCount full = search.count(b, step_scale);
         fmt::print(" | {}\n", full.overshoots ? fmt::format("{:.3f}x the free distance", full.worst) : std::string("-"));
     }
-    auto safe = search.smallest_safe_bias(step_scale, 0.0, max_bias);
-    if (!safe) {
-        for (double m : steps)
-            if (!search.count(max_bias, step_scale * m).overshoots) {
-                fmt::print(stderr, "{}: even bias {} overshoots at step scale {:.4g}; step x{:.2g} does not\n", graph,
-                           max_bias, step_scale, m);
-                return 1;
-            }
-        fmt::print(stderr, "{}: even bias {} with step x0.5 overshoots: the distance estimate is not usable\n", graph,
-                   max_bias);
-        return 1;
+    // The smallest bias that removes every overshoot at full steps; where no bias in range does,
+    // the largest step factor at which one does (shorter steps slow every ray, so they come last).
+    double factor = 1.0;
+    std::optional<double> safe;
+    for (double f : {1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.55, 0.5}) {
+        safe = search.smallest_safe_bias(step_scale * f, 0.0, max_bias);
+        if (safe) {
+            factor = f;
+            break;
+        }
     }
-    OvershootCount worst_off = search.count(0.0, step_scale);
-    fmt::print("smallest bias without overshoot in {} samples: {:.2f} (bias 0 overshoots {} times, {:.2f}%, worst step "
+    std::size_t residual = 0;
+    if (!safe) {
+        // No setting removes every overshoot: take the one that leaves the fewest (the larger step
+        // and then the smaller bias on a tie) and say so.
+        std::size_t best = SIZE_MAX;
+        for (double f : {1.0, 0.9, 0.8, 0.7, 0.6, 0.5})
+            for (double b = 0.0; b <= max_bias + 1e-9; b += 0.25) {
+                std::size_t n = search.count(b, step_scale * f).overshoots;
+                if (n < best) {
+                    best = n;
+                    safe = b;
+                    factor = f;
+                }
+            }
+        residual = best;
+        OvershootCount k = search.count(*safe, step_scale * factor);
+        fmt::print(stderr, "{}: warning: no bias up to {} with steps down to half removes every overshoot; the fewest "
+                           "remain at bias {:.2f}, step factor {:.2f}: {} of {} samples, worst step {:.2f}x the free distance\n",
+                   graph, max_bias, *safe, factor, k.overshoots, k.samples, k.worst);
+    }
+    const std::size_t exterior = search.samples().size() - search.rejected_interior();
+    OvershootCount off = search.count(0.0, step_scale);
+    fmt::print("{} in {} samples: {:.2f} at step factor {:.2f} (bias 0, full steps: {} overshoots, {:.2f}%, worst step "
                "{:.2f}x the free distance)\n",
-               s.samples - static_cast<int>(search.rejected_interior()), *safe, worst_off.overshoots,
-               100.0 * worst_off.rate(), worst_off.worst);
+               residual ? fmt::format("bias with the fewest overshoots ({})", residual) : std::string("smallest bias without overshoot"),
+               exterior, *safe, factor, off.overshoots, 100.0 * off.rate(), off.worst);
     if (o.dry_run) return 0;
 
     auto doc = nlohmann::ordered_json::parse(text.str());
@@ -134,14 +157,17 @@ int calibrate(const Common& c, const std::string& graph, const CalibrateOptions&
                 written.push_back(id);
             }
     }
+    // The step factor lives in the scene settings; 1 is the default and is not written.
+    if (factor < 1.0) doc["scene"]["step_factor"] = factor;
+    else if (doc.contains("scene") && doc["scene"].is_object()) doc["scene"].erase("step_factor");
     std::ofstream out(graph, std::ios::binary | std::ios::trunc);
     out << format_graph_text(doc);
     if (!out) {
         fmt::print(stderr, "{}: cannot write\n", graph);
         return 1;
     }
-    fmt::print("wrote bias {:.2f} into {} (node{} {})\n", value, graph, written.size() == 1 ? "" : "s",
-               fmt::join(written, ", "));
+    fmt::print("wrote bias {:.2f} into {} (node{} {}){}\n", value, graph, written.size() == 1 ? "" : "s",
+               fmt::join(written, ", "), factor < 1.0 ? fmt::format(" and step factor {:.2f} into /scene/step_factor", factor) : "");
     return 0;
 }
 

@@ -19,7 +19,7 @@ int nodes(const Common& c, const std::string& type, bool markdown);
 int probe(const Common& c, const std::string& graph, double x, double y, double z);
 
 struct CalibrateOptions {
-    int samples = 3000;
+    int samples = 10000;
     std::uint64_t seed = 1;
     int threads = 2;
     bool dry_run = false;

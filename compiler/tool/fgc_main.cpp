@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     fg::fgc::CalibrateOptions calib;
     auto* calibrate = app.add_subcommand("calibrate", "measure the derivative bias the graph's fractals need (bubble search) and write it into the graph");
     calibrate->add_option("graph", graph, "graph JSON")->required();
-    calibrate->add_option("--samples", calib.samples, "exterior points searched (default 3000)")->check(CLI::Range(1, 10000000));
+    calibrate->add_option("--samples", calib.samples, "exterior points searched (default 10000)")->check(CLI::Range(1, 10000000));
     calibrate->add_option("--seed", calib.seed, "random seed (same seed, same result)");
     calibrate->add_option("--threads", calib.threads, "CPU threads (default 2)")->check(CLI::Range(1, 256));
     calibrate->add_flag("--dry-run", calib.dry_run, "print the bias, leave the graph as it is");

@@ -1,6 +1,7 @@
 #include "hard_case_support.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +15,12 @@ std::vector<std::string> hard_case_names() {
         if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
     std::sort(names.begin(), names.end());
     return names;
+}
+
+std::string test_name(std::string name) {
+    for (auto& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
 }
 
 std::string hard_case_text(const std::string& name) { return read_source_file("graphs/hard/" + name + ".json"); }
@@ -43,6 +50,25 @@ std::vector<float> decode(const std::vector<std::byte>& bytes, ImageFormat f) {
     return out;
 }
 
+// A conemarch atlas (see fg_level_rect in common.glsl) has corners no level covers, whose
+// contents are undefined: keep only the texels of its levels.
+std::vector<float> written_levels(const std::vector<float>& rg, std::uint32_t width, std::uint32_t height,
+                                  std::uint32_t levels) {
+    std::uint32_t full = 1;
+    while (full + (full + 1) / 2 < width) ++full;
+    std::vector<float> out;
+    std::uint32_t y0 = 0;
+    for (std::uint32_t level = 0; level < levels; ++level) {
+        std::uint32_t x = level == 0 ? 0 : full, y = level == 0 ? 0 : y0;
+        std::uint32_t w = (full + (1u << level) - 1) >> level, h = (height + (1u << level) - 1) >> level;
+        for (std::uint32_t j = 0; j < h && y + j < height; ++j)
+            for (std::uint32_t i = 0; i < w && x + i < width; ++i)
+                for (std::uint32_t c = 0; c < 2; ++c) out.push_back(rg[((y + j) * width + x + i) * 2 + c]);
+        if (level > 0) y0 += h;
+    }
+    return out;
+}
+
 }  // namespace
 
 HardRender render_hard_case(const Pack& pack, StereoMode mode) {
@@ -57,8 +83,12 @@ HardRender render_hard_case(const Pack& pack, StereoMode mode) {
     HardRender out;
     out.frame = r.render(r.scene_camera(), 0.0);
     out.views = r.views();
-    for (const auto& img : r.executor().graph().images())
-        if (img.format != ImageFormat::RGBA8) out.float_images.emplace_back(img.name, decode(r.executor().download(img.name), img.format));
+    for (const auto& img : r.executor().graph().images()) {
+        if (img.format == ImageFormat::RGBA8) continue;
+        auto values = decode(r.executor().download(img.name), img.format);
+        if (img.name.rfind("cone.", 0) == 0) values = written_levels(values, img.width, img.height, fs.cone_levels);
+        out.float_images.emplace_back(img.name, std::move(values));
+    }
     return out;
 }
 

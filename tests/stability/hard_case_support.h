@@ -15,6 +15,8 @@ constexpr std::uint32_t kHardCaseSize = 64;
 // File stems of graphs/hard/*.json, sorted.
 std::vector<std::string> hard_case_names();
 std::string hard_case_text(const std::string& name);
+// A case's name as a test name (letters, digits and '_').
+std::string test_name(std::string name);
 
 struct HardRender {
     RenderedFrame frame;

@@ -97,4 +97,4 @@ TEST_P(HardCase, renders_bit_identically_twice) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, HardCase, ::testing::ValuesIn(hard_case_names()),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& info) { return test_name(info.param); });
