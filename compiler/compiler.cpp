@@ -126,6 +126,9 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     m.lipschitz_bound = result.lipschitz.bound;
     m.lipschitz_exact = result.lipschitz.exact;
     m.lipschitz_notes = result.lipschitz.notes;
+    if (ir->scene.step_factor != 1.0)
+        m.lipschitz_notes.push_back(fmt::format("step factor {:g} from the graph (fgc calibrate): step scale {:g}",
+                                                ir->scene.step_factor, ir->scene.step_factor / result.lipschitz.bound));
     m.scene = scene_settings_to_json(ir->scene);
     {
         std::vector<ValueType> types;
