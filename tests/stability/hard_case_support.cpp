@@ -71,11 +71,12 @@ std::vector<float> written_levels(const std::vector<float>& rg, std::uint32_t wi
 
 }  // namespace
 
-HardRender render_hard_case(const Pack& pack, StereoMode mode) {
+HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::string, double> knobs) {
     FrameSettings fs;
     fs.width = fs.height = kHardCaseSize;
     fs.stereo = mode;
     fs.cone_levels = 4;
+    fs.knobs = std::move(knobs);
     StereoSettings ss;
     ss.width = ss.height = kHardCaseSize;
     ss.world_scale = pack.manifest.scene.value("scale", 1.0);

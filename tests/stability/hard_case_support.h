@@ -2,6 +2,7 @@
 // What the stability suite needs around the hard-case scenes of graphs/hard/: the list (every
 // file there is a case, so a new one is covered without touching the tests), renders with every
 // float image read back, and the overstep check by dense CPU sampling along pixel rays.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,7 @@ struct HardRender {
     StereoViews views;
     std::vector<std::pair<std::string, std::vector<float>>> float_images;   // every float image, decoded
 };
-HardRender render_hard_case(const Pack& pack, StereoMode mode);
+HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::string, double> knobs = {});
 
 // Values that are NaN or infinite.
 std::size_t count_not_finite(const std::vector<float>& values);

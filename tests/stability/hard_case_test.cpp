@@ -81,6 +81,18 @@ TEST_P(HardCase, the_march_never_steps_past_the_surface) {
     }
 }
 
+// The check above can fail: the same scene marched without the bias and with step scale 4 (the
+// calibrated one is 0.65; a badly overshooting estimate acts like this) is caught.
+TEST_F(RuntimeTest, the_overstep_check_catches_a_march_without_the_guards) {
+    Pack pack = compile_pack(hard_case_text("axes_and_poles"));
+    auto cpu = cpu_scene(pack);
+    HardRender r = render_hard_case(pack, StereoMode::PerEye, {{"bias.bulb", 0.0}, {"step_scale", 4.0}});
+    OverstepReport rep = check_oversteps(*cpu->evaluator, cpu->settings, r.views.left, r.frame.depth_left,
+                                         r.views.pixel_half_diagonal, pack.manifest.find_spec("epsilon")->value, 4, 300);
+    RecordProperty("unguarded", fmt::format("{} rays, {} overstepped, {} holes", rep.rays, rep.overstepped, rep.holes));
+    EXPECT_GT(rep.overstepped + rep.holes, 0u);
+}
+
 TEST_P(HardCase, renders_bit_identically_twice) {
     Pack pack = compile_pack(hard_case_text(GetParam()));
     HardRender a = render_hard_case(pack, StereoMode::PerEye);
