@@ -112,7 +112,8 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     EffectSet effects = find_effects(*ir);
     result.lipschitz = analyse_lipschitz(*ir, diag);
     if (diag.has_errors()) return std::nullopt;
-    auto spec = assign_specialization(*ir, 1.0 / result.lipschitz.bound);
+    // The calibrated step factor (fgc calibrate) shortens every step beyond 1 / L.
+    auto spec = assign_specialization(*ir, ir->scene.step_factor / result.lipschitz.bound);
     result.times.analysis_ms = clock.lap();
 
     PackManifest& m = result.manifest;
@@ -125,6 +126,9 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     m.lipschitz_bound = result.lipschitz.bound;
     m.lipschitz_exact = result.lipschitz.exact;
     m.lipschitz_notes = result.lipschitz.notes;
+    if (ir->scene.step_factor != 1.0)
+        m.lipschitz_notes.push_back(fmt::format("step factor {:g} from the graph (fgc calibrate): step scale {:g}",
+                                                ir->scene.step_factor, ir->scene.step_factor / result.lipschitz.bound));
     m.scene = scene_settings_to_json(ir->scene);
     {
         std::vector<ValueType> types;

@@ -3,13 +3,26 @@
 
 const float FG_PI = 3.14159265358979;
 const float FG_TINY = 1e-20;
+// Cap of a running derivative. At high iteration counts dr grows past float's 3.4e38 (16^64 for a
+// power-16 bulb); capped here, with a bias up to 4 it stays finite, and a distance r log r / dr
+// with r below FG_RADIUS_MAX is below 1e-17 anyway.
+const float FG_DR_MAX = 1e37;
+// Largest orbit radius a fractal iterates on: its square must stay finite in float for length().
+const float FG_RADIUS_MAX = 1e18;
 
 // The conservative running derivative (Framestore): never let the derivative shrink below
 // bias * its previous value, so the distance estimate cannot overshoot where the plain formula
 // underestimates the growth. bias = 0 turns the guard off.
 float fg_conservative_dr(float dr, float bias, float next)
 {
-    return max(dr * bias, next);
+    return min(max(dr * bias, next), FG_DR_MAX);
+}
+
+// The plain running derivative gain * dr + 1, computed so that it never overflows: it stops at
+// FG_DR_MAX, where the distance is already negligible.
+float fg_grow_dr(float dr, float gain)
+{
+    return gain * min(dr, FG_DR_MAX / max(gain, 1.0)) + 1.0;
 }
 
 // acos that stays defined when rounding pushes its argument past +-1.

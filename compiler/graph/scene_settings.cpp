@@ -75,7 +75,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     const json& j = *jp;
     if (!r.object(j, ptr)) return s;
     r.check_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "vignette", "foveation", "bounds",
-                          "max_distance", "exposure", "scale", "locomotion"});
+                          "max_distance", "exposure", "scale", "locomotion", "step_factor"});
     if (j.contains("camera") && r.object(j["camera"], ptr + "/camera")) {
         const auto& c = j["camera"];
         std::string p = ptr + "/camera";
@@ -156,6 +156,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     r.number(j, "max_distance", ptr, s.max_distance, 1e-6, 1e9);
     r.number(j, "exposure", ptr, s.exposure, 0.0, 1e4);
     r.number(j, "scale", ptr, s.world_scale, 1e-12, 1e12);
+    r.number(j, "step_factor", ptr, s.step_factor, 0.05, 1.0);
     if (j.contains("locomotion")) {
         if (r.object(j["locomotion"], ptr + "/locomotion")) s.locomotion = j["locomotion"];
     }
@@ -182,6 +183,7 @@ json scene_settings_to_json(const SceneSettings& s) {
     j["max_distance"] = s.max_distance;
     j["exposure"] = s.exposure;
     j["scale"] = s.world_scale;
+    j["step_factor"] = s.step_factor;
     j["locomotion"] = s.locomotion;
     return j;
 }

@@ -58,8 +58,9 @@ void print_summary(const PackManifest& m, std::size_t bytes) {
     std::vector<std::string> passes;
     for (const auto& p : m.passes) passes.push_back(p.name);
     fmt::print("  passes:     {}\n", join(passes));
+    const auto* step = m.find_spec("step_scale");
     fmt::print("  lipschitz:  {:.4g}{} (step scale {:.4g})\n", m.lipschitz_bound, m.lipschitz_exact ? "" : " (fallback)",
-               1.0 / m.lipschitz_bound);
+               step ? step->value : 1.0 / m.lipschitz_bound);
     for (const auto& f : m.fractals) {
         const auto* bias = m.find_spec(f.bias_spec);
         const auto* iters = m.find_spec(f.iterations_spec);

@@ -1,5 +1,6 @@
 #pragma once
 // The fgc subcommands, each a function returning the process exit code.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,5 +17,14 @@ int compile(const Common& c, const std::string& graph, const std::string& output
 int info(const Common& c, const std::string& pack, bool json);
 int nodes(const Common& c, const std::string& type, bool markdown);
 int probe(const Common& c, const std::string& graph, double x, double y, double z);
+
+struct CalibrateOptions {
+    int samples = 10000;
+    std::uint64_t seed = 1;
+    int threads = 2;
+    bool dry_run = false;
+    bool quiet = false;   // no progress bar
+};
+int calibrate(const Common& c, const std::string& graph, const CalibrateOptions& options);
 
 }  // namespace fg::fgc

@@ -39,7 +39,17 @@ int main(int argc, char** argv) {
     probe->add_option("y", y)->required();
     probe->add_option("z", z)->required();
 
+    fg::fgc::CalibrateOptions calib;
+    auto* calibrate = app.add_subcommand("calibrate", "measure the derivative bias the graph's fractals need (bubble search) and write it into the graph");
+    calibrate->add_option("graph", graph, "graph JSON")->required();
+    calibrate->add_option("--samples", calib.samples, "exterior points searched (default 10000)")->check(CLI::Range(1, 10000000));
+    calibrate->add_option("--seed", calib.seed, "random seed (same seed, same result)");
+    calibrate->add_option("--threads", calib.threads, "CPU threads (default 2)")->check(CLI::Range(1, 256));
+    calibrate->add_flag("--dry-run", calib.dry_run, "print the bias, leave the graph as it is");
+    calibrate->add_flag("--quiet", calib.quiet, "no progress bar");
+
     CLI11_PARSE(app, argc, argv);
+    if (*calibrate) return fg::fgc::calibrate(common, graph, calib);
     if (*check) return fg::fgc::check(common, graph);
     if (*compile) return fg::fgc::compile(common, graph, output, glsl_dir, include_glsl, verbose);
     if (*info) return fg::fgc::info(common, pack, json);

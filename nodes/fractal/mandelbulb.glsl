@@ -6,12 +6,14 @@ void fg_fractal_mandelbulb(vec3 p, float power, int iterations, float bailout, f
     float r = length(z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r * r);
     for (int i = 0; i < iterations; i++) {
-        if (r > bailout) break;
+        // An orbit whose next radius would pass FG_RADIUS_MAX escapes in the next step anyway, and
+        // the estimate is (nearly) the same one step earlier: stop before float overflows.
+        float zr = pow(max(r, FG_TINY), power);
+        if (r > bailout || zr > FG_RADIUS_MAX) break;
         // At the origin and on the y axis the angles are 0/0: the safe forms answer 0.
         float theta = fg_safe_acos(fg_safe_div(z.y, r)) * power;
         float phi = fg_safe_atan(z.x, z.z) * power;
-        dr = fg_conservative_dr(dr, bias, power * pow(max(r, FG_TINY), power - 1.0) * dr + 1.0);
-        float zr = pow(max(r, FG_TINY), power);
+        dr = fg_conservative_dr(dr, bias, fg_grow_dr(dr, power * pow(max(r, FG_TINY), power - 1.0)));
         z = p + zr * vec3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
         r = length(z);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r * r));

@@ -33,19 +33,26 @@ vec3 fg_background(vec3 rd)
 #endif
 }
 
+// A gradient can vanish (inside a body, where the field is flat, or below float's resolution):
+// normalize(0) is NaN, and adding 1e-20 does not help where denormals flush to zero (1e-40).
+vec3 fg_safe_normalize(vec3 g)
+{
+    float len2 = dot(g, g);
+    return len2 > 1e-30 ? g * inversesqrt(len2) : vec3(0.0, 1.0, 0.0);
+}
+
 vec3 fg_normal_at(vec3 p, float h)
 {
     if (FG_NORMAL_TAPS >= 6) {
         vec2 e = vec2(h, 0.0);
-        return normalize(vec3(fg_scene_distance(p + e.xyy) - fg_scene_distance(p - e.xyy),
-                              fg_scene_distance(p + e.yxy) - fg_scene_distance(p - e.yxy),
-                              fg_scene_distance(p + e.yyx) - fg_scene_distance(p - e.yyx)) + vec3(1e-20));
+        return fg_safe_normalize(vec3(fg_scene_distance(p + e.xyy) - fg_scene_distance(p - e.xyy),
+                                      fg_scene_distance(p + e.yxy) - fg_scene_distance(p - e.yxy),
+                                      fg_scene_distance(p + e.yyx) - fg_scene_distance(p - e.yyx)));
     }
     // Tetrahedral taps: four evaluations instead of six.
     vec2 k = vec2(1.0, -1.0);
-    return normalize(k.xyy * fg_scene_distance(p + k.xyy * h) + k.yyx * fg_scene_distance(p + k.yyx * h) +
-                     k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h) +
-                     vec3(1e-20));
+    return fg_safe_normalize(k.xyy * fg_scene_distance(p + k.xyy * h) + k.yyx * fg_scene_distance(p + k.yyx * h) +
+                             k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h));
 }
 
 // Shading reuse across the eyes: the point p, seen by the other eye, lands on one of its pixels;
@@ -108,8 +115,11 @@ void main()
         }
         vec3 n = vec3(0.0, 1.0, 0.0);
 #ifdef FG_HAS_NORMALS
-        // The tap distance follows the pixel's footprint, so normals are as sharp as the image.
-        n = fg_normal_at(p, max(fg_cone_tan(0) * t, 1e-6));
+        // The tap distance follows the pixel's footprint, so normals are as sharp as the image. Its
+        // floor (an eye inside the fractal has t = 0) scales with the viewer (world scale in
+        // time.y: a scene at 1e-6 is smaller than a fixed 1e-6) and stays above float's spacing at p.
+        float floor_h = max(1e-6 * fg_frame.time.y, 1e-6 * length(p));
+        n = fg_normal_at(p, max(fg_cone_tan(0) * t, floor_h));
 #endif
         FgSurface s = fg_scene_surface(p, -rd, n);
 #ifdef FG_OUT_DIFFUSE
