@@ -3,23 +3,19 @@
 #include <filesystem>
 #include <fmt/format.h>
 
+#include "command_outcome.h"
 #include "frame/headless_renderer.h"
 #include "graph/scene_settings.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
-#include "vk/vulkan_error.h"
 
 namespace fg::fgplay {
 
 int render(const RenderOptions& o) {
     if (!o.path.empty()) return render_path(o);
-    Diagnostics diag;
-    auto pack = read_pack_file(o.pack, diag);
-    if (!pack) {
-        fmt::print(stderr, "{}", diag.format(o.pack));
-        return 1;
-    }
-    try {
+    auto pack = read_pack_or_report(o.pack);
+    if (!pack) return 1;
+    return run_reporting_errors([&] {
         vk::ContextOptions ctx_options;
         ctx_options.validation = o.validation;
         ctx_options.device = o.device;
@@ -70,19 +66,10 @@ int render(const RenderOptions& o) {
                 fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,
                            evals.empty() ? "" : evals.substr(1, evals.size() - 2));
         }
-        if (ctx.validation_enabled() && ctx.validation_errors() > 0) {
-            fmt::print(stderr, "{} Vulkan validation errors\n", ctx.validation_errors());
-            return 1;
-        }
+        if (validation_failed(ctx)) return 1;
         fmt::print("images in {}/: left.png right.png side_by_side.png{}\n", o.out, o.depth ? " depth_left.png depth_right.png" : "");
-    } catch (const vk::VulkanError& e) {
-        fmt::print(stderr, "fgplay: Vulkan: {}\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "fgplay: {}\n", e.what());
-        return 1;
-    }
-    return 0;
+        return 0;
+    });
 }
 
 }  // namespace fg::fgplay

@@ -2,13 +2,13 @@
 // images, resumable and shardable for job arrays (docs/scale-out.md).
 #include <fmt/format.h>
 
+#include "command_outcome.h"
 #include "fgplay_render.h"
 #include "graph/scene_settings.h"
 #include "offline/frame_record.h"
 #include "offline/path_render.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
-#include "vk/vulkan_error.h"
 
 namespace fg::fgplay {
 
@@ -23,12 +23,9 @@ std::string job_fingerprint(const RenderOptions& o, const PathRenderSettings& s)
 }  // namespace
 
 int render_path(const RenderOptions& o) {
+    auto pack = read_pack_or_report(o.pack);
+    if (!pack) return 1;
     Diagnostics diag;
-    auto pack = read_pack_file(o.pack, diag);
-    if (!pack) {
-        fmt::print(stderr, "{}", diag.format(o.pack));
-        return 1;
-    }
     SceneSettings scene = parse_scene_settings(&pack->manifest.scene, "/scene", diag);
     auto path = CameraPath::load(o.path, scene.world_scale, diag);
     if (!path) {
@@ -59,7 +56,7 @@ int render_path(const RenderOptions& o) {
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;
     s.count_evaluations = o.count;
-    try {
+    return run_reporting_errors([&] {
         vk::ContextOptions ctx_options;
         ctx_options.validation = o.validation;
         ctx_options.device = o.device;
@@ -78,18 +75,9 @@ int render_path(const RenderOptions& o) {
                    result.rendered, result.skipped, result.seconds, fps, 3600.0 * fps);
         if (s.count_evaluations && result.rendered > 0)
             fmt::print("SDF evaluations per sample: {:.2f} (mean over the rendered frames)\n", result.evaluations_per_sample);
-        if (ctx.validation_enabled() && ctx.validation_errors() > 0) {
-            fmt::print(stderr, "{} Vulkan validation errors\n", ctx.validation_errors());
-            return 1;
-        }
-    } catch (const vk::VulkanError& e) {
-        fmt::print(stderr, "fgplay: Vulkan: {}\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "fgplay: {}\n", e.what());
-        return 1;
-    }
-    return 0;
+        if (validation_failed(ctx)) return 1;
+        return 0;
+    });
 }
 
 }  // namespace fg::fgplay
