@@ -37,6 +37,7 @@ PassTemplate parse_template(const EmbeddedFile& f) {
             std::string what;
             words >> what;
             t.needs_surface = what == "surface";
+            t.needs_scene = what != "nothing";
         } else if (key == "include:") {
             std::string file;
             words >> file;
@@ -119,8 +120,10 @@ AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, 
         w.write(shared_template(file), shared);
         w.blank();
     }
-    scene.declarations(w);
-    scene.distance_function(w);
+    if (pass.needs_scene) {
+        scene.declarations(w);
+        scene.distance_function(w);
+    }
     if (pass.needs_surface) scene.surface_function(w);
     SourceOrigin body;
     body.kind = SourceOrigin::Kind::Template;

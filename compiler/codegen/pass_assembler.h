@@ -23,6 +23,7 @@ struct PassTemplate {
     std::string file;                  // e.g. "shade.comp"
     std::string text;
     bool needs_surface = false;
+    bool needs_scene = true;      // `needs: nothing`: a pass that never evaluates the scene gets none of its code
     std::vector<Effect> when_any;      // empty: always
     std::vector<std::string> includes; // shared template files pasted after common.glsl
     bool runs_with(const EffectSet& effects) const;

@@ -1,5 +1,5 @@
 //! pass: fovea
-//! needs: distance
+//! needs: nothing
 //! when: always
 // Fixed foveation's fill. Beyond the fovea only one pixel of each 2x2 block, the even one, was
 // marched and shaded (fg_dispatch_takes); this fills in the other three by bilinear interpolation between the marched
