@@ -24,6 +24,14 @@ int run_reporting_errors(const std::function<int()>& body) {
     return 1;
 }
 
+vk::ContextOptions render_context_options(bool validation, const std::string& device) {
+    vk::ContextOptions options;
+    options.validation = validation;
+    options.device = device;
+    options.require_timestamps = false;
+    return options;
+}
+
 bool validation_failed(const vk::Context& ctx) {
     if (!ctx.validation_enabled() || ctx.validation_errors() == 0) return false;
     fmt::print(stderr, "{} Vulkan validation errors\n", ctx.validation_errors());

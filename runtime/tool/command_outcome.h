@@ -16,6 +16,10 @@ std::optional<Pack> read_pack_or_report(const std::string& path);
 // Runs `body`, turning exceptions into a message and exit code 1.
 int run_reporting_errors(const std::function<int()>& body);
 
+// The Vulkan context every `fgplay render` path asks for: validation and device as given,
+// timestamps optional (lavapipe and some drivers lack them; times are then left out).
+vk::ContextOptions render_context_options(bool validation, const std::string& device);
+
 // True (after saying so) if the validation layer reported errors.
 bool validation_failed(const vk::Context& ctx);
 

@@ -16,11 +16,7 @@ int render(const RenderOptions& o) {
     auto pack = read_pack_or_report(o.pack);
     if (!pack) return 1;
     return run_reporting_errors([&] {
-        vk::ContextOptions ctx_options;
-        ctx_options.validation = o.validation;
-        ctx_options.device = o.device;
-        ctx_options.require_timestamps = false;
-        vk::Context ctx(ctx_options);
+        vk::Context ctx(render_context_options(o.validation, o.device));
         FrameSettings frame;
         frame.width = o.width;
         frame.height = o.height;

@@ -57,11 +57,7 @@ int render_path(const RenderOptions& o) {
     s.knobs = o.knobs;
     s.count_evaluations = o.count;
     return run_reporting_errors([&] {
-        vk::ContextOptions ctx_options;
-        ctx_options.validation = o.validation;
-        ctx_options.device = o.device;
-        ctx_options.require_timestamps = false;
-        vk::Context ctx(ctx_options);
+        vk::Context ctx(render_context_options(o.validation, o.device));
         PathRenderer renderer(ctx, *pack, *path, s);
         if (o.describe) fmt::print("{}", renderer.describe());
         fmt::print("device: {}\n{} frames {}:{} of {} ({:.3g} fps path), {} {}x{} per eye, supersampling {}\n",

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <fmt/format.h>
 
 #include "frame/accuracy_metrics.h"
@@ -154,22 +153,14 @@ TEST_P(ConemarchLevels, every_level_is_a_lower_bound_of_the_reference_hit) {
     const View& view = mode == StereoMode::PerEye ? r.views.left : r.views.centre;
     auto ref = strict_reference(*cpu, view, r.views.pixel_half_diagonal, pack);
     std::uint32_t W = view.width, H = view.height;
-    std::uint32_t atlas_w = W + (W + 1) / 2;
-    auto at = [&](std::uint32_t x, std::uint32_t y) {
-        float v[2];
-        std::memcpy(v, r.atlas.data() + (static_cast<std::size_t>(y) * atlas_w + x) * 8, 8);
-        return v[1];   // the cone bound
-    };
     double cone = std::tan(r.views.pixel_half_diagonal);
     std::size_t checked = 0, violations = 0;
     for (std::uint32_t level = 0; level < 4; ++level) {
-        std::uint32_t x0 = level == 0 ? 0 : W, y0 = 0;
-        for (std::uint32_t k = 1; k < level; ++k) y0 += (H + (1u << k) - 1) >> k;
         for (std::uint32_t y = 0; y < H; ++y)
             for (std::uint32_t x = 0; x < W; ++x) {
                 double t_ref = ref.depth[static_cast<std::size_t>(y) * W + x];
                 if (t_ref < 0.0) continue;
-                float bound = at(x0 + (x >> level), y0 + (y >> level));
+                float bound = test::atlas_cone_bound(r.atlas, W, H, level, x, y);
                 ++checked;
                 // The reference stops within 0.05 cone radii of the surface.
                 if (bound > t_ref + 0.1 * cone * t_ref) ++violations;

@@ -3,6 +3,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <cstring>
+
 namespace fg::test {
 
 std::string read_source_file(const std::string& relative) {
@@ -32,6 +34,17 @@ std::unique_ptr<CpuScene> cpu_scene(const Pack& pack) {
     if (!s->evaluator) throw std::runtime_error(diag.format());
     s->settings = s->ir.scene;
     return s;
+}
+
+float atlas_cone_bound(const std::vector<std::byte>& atlas, std::uint32_t width, std::uint32_t height,
+                       std::uint32_t level, std::uint32_t x, std::uint32_t y) {
+    std::uint32_t atlas_width = width + (width + 1) / 2;
+    std::uint32_t x0 = level == 0 ? 0 : width, y0 = 0;
+    for (std::uint32_t k = 1; k < level; ++k) y0 += (height + (1u << k) - 1) >> k;
+    std::size_t at = (static_cast<std::size_t>(y0 + (y >> level)) * atlas_width + x0 + (x >> level)) * 8;
+    float texel[2];
+    std::memcpy(texel, atlas.data() + at, 8);
+    return texel[1];
 }
 
 vk::Context& shared_context() {

@@ -26,6 +26,11 @@ struct CpuScene {
 };
 std::unique_ptr<CpuScene> cpu_scene(const Pack& pack);
 
+// The cone bound a conemarch level holds for full-resolution pixel (x, y), read from a downloaded
+// atlas of a view `width` x `height` (layout: fg_level_rect in common.glsl, rg32f texels).
+float atlas_cone_bound(const std::vector<std::byte>& atlas, std::uint32_t width, std::uint32_t height,
+                       std::uint32_t level, std::uint32_t x, std::uint32_t y);
+
 // One Vulkan context for the whole test program (pipeline creation is the slow part on lavapipe).
 vk::Context& shared_context();
 
