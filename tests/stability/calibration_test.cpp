@@ -3,7 +3,11 @@
 // thread count. Every fractal node of the library is covered without naming it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "analysis/bubble_search.h"
 #include "analysis/lipschitz_bound.h"
@@ -54,6 +58,16 @@ BubbleSearch searched(const Lowered& g, int samples, std::uint64_t seed, int thr
 }
 
 class CalibratedHardCase : public ::testing::TestWithParam<std::string> {};
+class CalibratedGalleryGraph : public ::testing::TestWithParam<std::string> {};
+
+// File stems of graphs/gallery/*.json, sorted.
+std::vector<std::string> gallery_names() {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/graphs/gallery"))
+        if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
 
 }  // namespace
 
@@ -116,6 +130,29 @@ TEST_P(CalibratedHardCase, the_bubble_search_finds_no_overshoot_at_the_graph_bia
     EXPECT_GT(c.samples, 200u);
     EXPECT_EQ(c.overshoots, 0u) << "bias " << graph_bias(g->ir) << ", worst step " << c.worst << "x the free distance";
 }
+
+// The gallery is what users start from: every fractal there carries the bias fgc calibrate measured
+// (not the node's default), and it holds on samples the calibration did not see.
+TEST_P(CalibratedGalleryGraph, carries_a_calibrated_bias_that_finds_no_overshoot) {
+    std::string text = read_source_file("graphs/gallery/" + GetParam() + ".json");
+    auto g = lower(text);
+    auto knobs = BubbleSearch::bias_knobs(g->ir);
+    if (knobs.empty()) GTEST_SKIP() << "no fractal with a bias knob";
+    auto doc = nlohmann::json::parse(text);
+    for (const auto& node : doc["nodes"])
+        for (const auto& k : knobs)
+            if (k == "bias." + node["id"].get<std::string>())
+                EXPECT_TRUE(node.contains("inputs") && node["inputs"].contains("bias"))
+                    << "node '" << node["id"].get<std::string>() << "' has no calibrated bias: run fgc calibrate";
+    BubbleSearch search = searched(*g, 300, 11);
+    OvershootCount c = search.count(graph_bias(g->ir), g->step_scale);
+    RecordProperty("overshoots", fmt::format("{} of {} at bias {}", c.overshoots, c.samples, graph_bias(g->ir)));
+    EXPECT_GT(c.samples, 200u);
+    EXPECT_EQ(c.overshoots, 0u) << "bias " << graph_bias(g->ir) << ", worst step " << c.worst << "x the free distance";
+}
+
+INSTANTIATE_TEST_SUITE_P(Gallery, CalibratedGalleryGraph, ::testing::ValuesIn(gallery_names()),
+                         [](const auto& info) { return test_name(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(Cases, CalibratedHardCase, ::testing::ValuesIn(hard_case_names()),
                          [](const auto& info) { return test_name(info.param); });
