@@ -113,6 +113,7 @@ void BubbleSearch::search_ball(CpuEvaluator& ev, BubbleSample& s, std::uint64_t 
                 if (!(safe > 0.0) || glm::length(walker.p - centre) > radius) break;
                 if (safe < target) {
                     s.p = walker.p;
+                    s.walked = true;
                     d = distance_at(ev, s, settings_.reach_bias);
                     break;
                 }
@@ -155,6 +156,52 @@ void BubbleSearch::search_ball(CpuEvaluator& ev, BubbleSample& s, std::uint64_t 
     }
 }
 
+namespace {
+
+// The median and 90th percentile of a set of growth figures.
+SurfaceGrowth growth_of(std::vector<double> g) {
+    SurfaceGrowth out;
+    out.samples = g.size();
+    if (g.empty()) return out;
+    auto at = [&](double q) {
+        auto k = g.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(g.size() - 1));
+        std::nth_element(g.begin(), k, g.end());
+        return *k;
+    };
+    out.median = at(0.5);
+    out.p90 = at(0.9);
+    return out;
+}
+
+std::vector<glm::dvec3> march_start_view(CpuEvaluator& ev, int grid) {
+    const SceneSettings& scene = ev.ir().scene;
+    const glm::dvec3 eye = scene.camera.position;
+    const glm::dvec3 forward = glm::normalize(scene.camera.target - eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, scene.camera.up));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double tan_half = std::tan(0.5 * scene.camera.fov_deg * M_PI / 180.0);
+    const double far = glm::length(eye - scene.bounds_center) + 2.0 * scene.bounds_radius;
+    std::vector<glm::dvec3> points;
+    for (int y = 0; y < grid; ++y)
+        for (int x = 0; x < grid; ++x) {
+            glm::dvec2 uv = (glm::dvec2(x, y) + 0.5) / static_cast<double>(grid) * 2.0 - 1.0;
+            glm::dvec3 dir = glm::normalize(forward + tan_half * (uv.x * right - uv.y * up));
+            double t = 0.0;
+            for (int step = 0; step < 400 && t < far; ++step) {
+                double d = ev.distance(eye + t * dir);
+                if (!std::isfinite(d) || d < 0.0) break;
+                if (d < 1e-3 * std::max(t, 1e-9)) {
+                    points.push_back(eye + t * dir);
+                    break;
+                }
+                t += d;
+            }
+        }
+    return points;
+}
+
+}  // namespace
+
 void BubbleSearch::run(const std::function<void(std::size_t, std::size_t)>& progress) {
     const std::size_t n = static_cast<std::size_t>(std::max(settings_.samples, 0));
     samples_.assign(n, {});
@@ -180,6 +227,11 @@ void BubbleSearch::run(const std::function<void(std::size_t, std::size_t)>& prog
     for (auto& w : workers) w.join();
     if (progress) progress(n, n);
     evaluations_ = evaluations.load();
+    {
+        CpuEvaluator ev = scene_;
+        for (const auto& k : knobs_) ev.set_knob(k, 0.0);
+        visible_ = march_start_view(ev, 24);
+    }
     rejected_interior_ = static_cast<std::size_t>(
         std::count_if(samples_.begin(), samples_.end(), [](const BubbleSample& s) { return s.reach <= 0.0; }));
 }
@@ -198,6 +250,45 @@ OvershootCount BubbleSearch::count(double bias, double step_scale) const {
         }
     }
     return c;
+}
+
+// A bias larger than any knob allows: where even this leaves the distance alone, no fractal
+// decides it.
+constexpr double kAnyBias = 64.0;
+
+SurfaceGrowth BubbleSearch::surface_growth(double bias) const {
+    CpuEvaluator ev = scene_;
+    std::vector<double> walked, visible;
+    auto growth_at = [&](const BubbleSample& s, std::vector<double>& out) {
+        double plain = distance_at(ev, s, 0.0), guarded = distance_at(ev, s, bias);
+        // Only where the fractal decides the distance: a floor beside it would dilute the figure.
+        if (distance_at(ev, s, kAnyBias) == plain) return;
+        if (plain > 0.0 && guarded > 0.0 && std::isfinite(plain) && std::isfinite(guarded)) out.push_back(plain / guarded);
+        // A guarded estimate at or below zero outside the surface (a smooth union with a shrunken
+        // fractal digs a false interior) is the largest growth there is.
+        else if (plain > 0.0 && std::isfinite(plain)) out.push_back(std::numeric_limits<double>::infinity());
+    };
+    for (const auto& s : samples_)
+        // Only where the march decides hits: within a hundredth of the bounds of the surface.
+        if (s.walked && s.reach > 0.0 && distance_at(ev, s, 0.0) <= 0.01 * scene_.ir().scene.bounds_radius) growth_at(s, walked);
+    BubbleSample start;
+    for (const auto& p : ev.ir().params) start.params.push_back(p.value);
+    for (const auto& p : visible_) {
+        start.p = p;
+        growth_at(start, visible);
+    }
+    SurfaceGrowth a = growth_of(std::move(walked)), b = growth_of(std::move(visible));
+    return a.p90 >= b.p90 ? a : b;
+}
+
+double BubbleSearch::largest_bias_within_growth(double max_growth, double lo, double hi, double resolution) const {
+    if (surface_growth(hi).p90 <= max_growth) return hi;
+    if (surface_growth(lo).p90 > max_growth) return lo;
+    while (hi - lo > resolution) {
+        double mid = 0.5 * (lo + hi);
+        (surface_growth(mid).p90 <= max_growth ? lo : hi) = mid;
+    }
+    return std::floor(lo / resolution + 1e-9) * resolution;
 }
 
 std::optional<double> BubbleSearch::smallest_safe_bias(double step_scale, double lo, double hi,

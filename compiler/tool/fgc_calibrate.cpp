@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "analysis/bubble_search.h"
 #include "analysis/lipschitz_bound.h"
@@ -38,6 +39,9 @@ std::vector<double> bias_grid(double max_bias) {
         if (b <= max_bias + 1e-12) out.push_back(b);
     return out;
 }
+
+// A surface growth figure; infinite where the guarded estimate reaches zero outside the surface.
+std::string growth_text(double g) { return std::isfinite(g) ? fmt::format("{:.2f}x", g) : std::string("unbounded"); }
 
 double knob_max(const IrGraph& ir, const std::string& knob) {
     int idx = ir.find(knob.substr(knob.find('.') + 1));
@@ -97,7 +101,8 @@ int calibrate(const Common& c, const std::string& graph, const CalibrateOptions&
     fmt::print("overshoot rate (samples whose step reaches an interior point), by bias and step multiplier:\n");
     fmt::print("  {:>6} |", "bias");
     for (double m : steps) fmt::print(" {:>13}", fmt::format("step x{:.2g}", m));
-    fmt::print(" | worst step at x1\n  -------+{}-+------------------\n", std::string(steps.size() * 14, '-'));
+    fmt::print(" | worst step at x1             | surface growth (median, p90)\n  -------+{}-+------------------------------+-----------------------------\n",
+               std::string(steps.size() * 14, '-'));
     for (double b : bias_grid(max_bias)) {
         fmt::print("  {:>6.3g} |", b);
         for (double m : steps) {
@@ -105,14 +110,20 @@ int calibrate(const Common& c, const std::string& graph, const CalibrateOptions&
             fmt::print(" {:>13}", fmt::format("{:.2f}% ({})", 100.0 * k.rate(), k.overshoots));
         }
         OvershootCount full = search.count(b, step_scale);
-        fmt::print(" | {}\n", full.overshoots ? fmt::format("{:.3f}x the free distance", full.worst) : std::string("-"));
+        SurfaceGrowth g = search.surface_growth(b);
+        fmt::print(" | {:<28} | {}, {}\n", full.overshoots ? fmt::format("{:.3f}x the free distance", full.worst) : std::string("-"),
+                   growth_text(g.median), growth_text(g.p90));
     }
-    // The smallest bias that removes every overshoot at full steps; where no bias in range does,
-    // the largest step factor at which one does (shorter steps slow every ray, so they come last).
+    // The bias may not move the visible surface more than the growth budget: a bias that removes
+    // the last rare overshoot can shrink the estimate a hundredfold near the surface and melt the
+    // detail into a blob (the gallery's Julia pool did at the zero-overshoot bias 3.96).
+    const double cap = o.max_growth > 0.0 ? search.largest_bias_within_growth(o.max_growth, 0.0, max_bias) : max_bias;
+    // The smallest bias within the budget that removes every overshoot at full steps; where none
+    // does, the largest step factor at which one does (shorter steps slow every ray, so they come last).
     double factor = 1.0;
     std::optional<double> safe;
     for (double f : {1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.55, 0.5}) {
-        safe = search.smallest_safe_bias(step_scale * f, 0.0, max_bias);
+        safe = search.smallest_safe_bias(step_scale * f, 0.0, cap);
         if (safe) {
             factor = f;
             break;
@@ -120,30 +131,37 @@ int calibrate(const Common& c, const std::string& graph, const CalibrateOptions&
     }
     std::size_t residual = 0;
     if (!safe) {
-        // No setting removes every overshoot: take the one that leaves the fewest (the larger step
-        // and then the smaller bias on a tie) and say so.
+        // No setting within the budget removes every overshoot: keep full steps (halving them costs
+        // twice the march for a fraction of the rare overshoots) and take the smallest bias that
+        // leaves the fewest; say so, and what removing them all would cost in growth.
         std::size_t best = SIZE_MAX;
-        for (double f : {1.0, 0.9, 0.8, 0.7, 0.6, 0.5})
-            for (double b = 0.0; b <= max_bias + 1e-9; b += 0.25) {
-                std::size_t n = search.count(b, step_scale * f).overshoots;
-                if (n < best) {
-                    best = n;
-                    safe = b;
-                    factor = f;
-                }
+        for (double b = 0.0; b <= cap + 1e-9; b = std::min(b + 0.25, b < cap ? cap : b + 1.0)) {
+            std::size_t n = search.count(b, step_scale).overshoots;
+            if (n < best) {
+                best = n;
+                safe = b;
             }
+        }
         residual = best;
-        OvershootCount k = search.count(*safe, step_scale * factor);
-        fmt::print(stderr, "{}: warning: no bias up to {} with steps down to half removes every overshoot; the fewest "
-                           "remain at bias {:.2f}, step factor {:.2f}: {} of {} samples, worst step {:.2f}x the free distance\n",
-                   graph, max_bias, *safe, factor, k.overshoots, k.samples, k.worst);
+        OvershootCount k = search.count(*safe, step_scale);
+        fmt::print(stderr, "{}: warning: no bias within the surface growth budget ({}x) removes every overshoot; the fewest "
+                           "remain at bias {:.2f}: {} of {} samples, worst step {:.2f}x the free distance",
+                   graph, o.max_growth, *safe, k.overshoots, k.samples, k.worst);
+        for (double f : {1.0, 0.9, 0.8, 0.7, 0.6, 0.5})
+            if (auto strict = search.smallest_safe_bias(step_scale * f, 0.0, max_bias)) {
+                fmt::print(stderr, " (bias {:.2f} at step factor {:.2f} removes them all but grows the surface {}: "
+                                   "--max-growth 0 takes it)",
+                           *strict, f, growth_text(search.surface_growth(*strict).p90));
+                break;
+            }
+        fmt::print(stderr, "\n");
     }
     const std::size_t exterior = search.samples().size() - search.rejected_interior();
     OvershootCount off = search.count(0.0, step_scale);
-    fmt::print("{} in {} samples: {:.2f} at step factor {:.2f} (bias 0, full steps: {} overshoots, {:.2f}%, worst step "
-               "{:.2f}x the free distance)\n",
+    fmt::print("{} in {} samples: {:.2f} at step factor {:.2f}, surface growth {} (bias 0, full steps: {} overshoots, "
+               "{:.2f}%, worst step {:.2f}x the free distance)\n",
                residual ? fmt::format("bias with the fewest overshoots ({})", residual) : std::string("smallest bias without overshoot"),
-               exterior, *safe, factor, off.overshoots, 100.0 * off.rate(), off.worst);
+               exterior, *safe, factor, growth_text(search.surface_growth(*safe).p90), off.overshoots, 100.0 * off.rate(), off.worst);
     if (o.dry_run) return 0;
 
     auto doc = nlohmann::ordered_json::parse(text.str());

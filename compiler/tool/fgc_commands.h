@@ -24,6 +24,10 @@ struct CalibrateOptions {
     int threads = 2;
     bool dry_run = false;
     bool quiet = false;   // no progress bar
+    // How far the bias may move the surface the march sees (90th percentile of the estimate's
+    // shrink near the surface, in hit thresholds); 0: no limit, remove every overshoot whatever it
+    // does to the look.
+    double max_growth = 2.0;
 };
 int calibrate(const Common& c, const std::string& graph, const CalibrateOptions& options);
 

@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
     calibrate->add_option("--threads", calib.threads, "CPU threads (default 2)")->check(CLI::Range(1, 256));
     calibrate->add_flag("--dry-run", calib.dry_run, "print the bias, leave the graph as it is");
     calibrate->add_flag("--quiet", calib.quiet, "no progress bar");
+    calibrate->add_option("--max-growth", calib.max_growth,
+                          "how far the bias may move the visible surface, in hit thresholds (90th percentile near the surface; "
+                          "default 2; 0: no limit)")->check(CLI::Range(0.0, 1e12));
 
     CLI11_PARSE(app, argc, argv);
     if (*calibrate) return fg::fgc::calibrate(common, graph, calib);

@@ -16,7 +16,7 @@ set(bias ${CMAKE_MATCH_2})
 # As JSON writes it: 11.60 -> 11.6, 3.00 -> 3.0.
 string(REGEX REPLACE "0+$" "" bias "${bias}")
 string(REGEX REPLACE "\\.$" ".0" bias "${bias}")
-if(NOT out MATCHES "bias \\| +step x1")
+if(NOT out MATCHES "bias \\| +step x1" OR NOT out MATCHES "surface growth \\(median, p90\\)")
   message(FATAL_ERROR "no summary table:\n${out}")
 endif()
 file(READ ${copy} after)
