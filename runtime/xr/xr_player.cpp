@@ -236,14 +236,6 @@ private:
         last_time_ = time;
         const ControllerState input = actions_ ? actions_->sync(space_, time) : ControllerState{};
 
-        // A looping scene: whole periods off the head, before anything reads its position.
-        if (period_ && options_.wrap) {
-            glm::dvec3 shift = play_.wrap(tracked_head, *period_);
-            if (shift != glm::dvec3(0.0)) {
-                flight_->translate(-shift);
-                ++wraps_;
-            }
-        }
         const SnapTurnFrame turn = snap_.update(input.turn.x, dt);
         if (turn.yaw_rad != 0.0) play_.turn_about(tracked_head, turn.yaw_rad);
         const double ipd_m = glm::length(eye_r - eye_l);
@@ -271,6 +263,16 @@ private:
         play_.move(moved - head.position);
         flown_ += moved - head.position;
         head.position = moved;
+        // A looping scene: whole periods off the head before it is rendered, so its coordinates
+        // stay inside one cell however far it flies. The probes' answers move with it.
+        if (period_ && options_.wrap) {
+            const glm::dvec3 shift = play_.wrap(tracked_head, *period_);
+            if (shift != glm::dvec3(0.0)) {
+                flight_->translate(-shift);
+                head.position -= shift;
+                ++wraps_;
+            }
+        }
         if (witness_) witness_->observe(head.position);
         for (int i = 0; i < 3; ++i) head_extent_ = std::max(head_extent_, std::abs(head.position[i]));
         stereo_.ipd_m = ipd_m;
