@@ -215,7 +215,8 @@ private:
         check(xrEndFrame(session_, &ei), "xrEndFrame");
     }
 
-    // Renders both eyes for the views predicted at `time`; false when tracking is lost.
+    // Renders both eyes for the views predicted at `time`; false (no layer) when tracking is lost
+    // or a snap turn has the view at black.
     bool render(XrTime time, XrDuration period_ns, XrCompositionLayerProjectionView* projection) {
         XrViewLocateInfo li{XR_TYPE_VIEW_LOCATE_INFO};
         li.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
