@@ -6,6 +6,7 @@
 #include <xxhash.h>
 
 #include "analysis/effect_set.h"
+#include "analysis/periodicity.h"
 #include "analysis/specialization.h"
 #include "codegen/scene_codegen.h"
 #include "graph/graph_loader.h"
@@ -129,6 +130,7 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     if (ir->scene.step_factor != 1.0)
         m.lipschitz_notes.push_back(fmt::format("step factor {:g} from the graph (fgc calibrate): step scale {:g}",
                                                 ir->scene.step_factor, ir->scene.step_factor / result.lipschitz.bound));
+    m.period = analyse_periodicity(*ir).period;
     m.scene = scene_settings_to_json(ir->scene);
     {
         std::vector<ValueType> types;

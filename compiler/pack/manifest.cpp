@@ -146,6 +146,7 @@ json manifest_to_json(const PackManifest& m) {
                                  {"running_derivative", f.running_derivative},
                                  {"bias_spec", f.bias_spec},
                                  {"iterations_spec", f.iterations_spec}});
+    if (m.period) j["period"] = *m.period;
     j["scene"] = m.scene;
     j["uniform_blocks"] = m.uniform_blocks;
     return j;
@@ -303,6 +304,17 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
                 r.fail("iterations_spec names no specialization constant", ptr);
             m.fractals.push_back(f);
         }
+    }
+    // Optional (older packs have none): three positive periods.
+    if (auto it = j.find("period"); it != j.end()) {
+        std::array<double, 3> period{};
+        bool good = it->is_array() && it->size() == 3;
+        for (std::size_t i = 0; good && i < 3; ++i) {
+            good = (*it)[i].is_number() && (*it)[i].get<double>() > 0.0 && std::isfinite((*it)[i].get<double>());
+            if (good) period[i] = (*it)[i].get<double>();
+        }
+        if (good) m.period = period;
+        else r.fail("\"period\" must be three positive numbers", "/period");
     }
     if (auto* ub = r.field(j, "uniform_blocks", "")) {
         if (!ub->is_object()) r.fail("\"uniform_blocks\" must be an object of name -> size", "/uniform_blocks");

@@ -75,6 +75,9 @@ struct PackManifest {
     bool lipschitz_exact = true;       // false: some rule was unknown and a fallback was used
     std::vector<std::string> lipschitz_notes;
     std::vector<ManifestFractal> fractals;
+    // The scene repeats with this period on every axis (analysis/periodicity.h); absent in packs
+    // from before it was recorded and in scenes that do not repeat.
+    std::optional<std::array<double, 3>> period;
     nlohmann::json scene = nlohmann::json::object();   // scene settings (graph/scene_settings.h)
     std::map<std::string, std::uint32_t> uniform_blocks;  // block type name -> size, from reflection
 

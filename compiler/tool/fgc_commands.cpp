@@ -61,6 +61,8 @@ void print_summary(const PackManifest& m, std::size_t bytes) {
     const auto* step = m.find_spec("step_scale");
     fmt::print("  lipschitz:  {:.4g}{} (step scale {:.4g})\n", m.lipschitz_bound, m.lipschitz_exact ? "" : " (fallback)",
                step ? step->value : 1.0 / m.lipschitz_bound);
+    if (m.period) fmt::print("  period:     {:g} x {:g} x {:g} (the scene repeats; the runtime wraps the head)\n", (*m.period)[0],
+                             (*m.period)[1], (*m.period)[2]);
     for (const auto& f : m.fractals) {
         const auto* bias = m.find_spec(f.bias_spec);
         const auto* iters = m.find_spec(f.iterations_spec);

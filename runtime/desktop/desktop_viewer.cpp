@@ -15,6 +15,8 @@
 #include "locomotion/collision_witness.h"
 #include "locomotion/comfort_vignette.h"
 #include "locomotion/probed_flight.h"
+#include "locomotion/snap_turn.h"
+#include "locomotion/world_scale.h"
 #include "graph/scene_settings.h"
 #include "image_output.h"
 #include "vk/vulkan_error.h"
@@ -34,6 +36,18 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
     if (action != GLFW_PRESS) return;
     if (key == GLFW_KEY_B) static_cast<Input*>(glfwGetWindowUserPointer(w))->toggle_stereo = true;
     if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
+}
+
+// Whether a scripted key ("right@3-5") is held at `frame` (1-based).
+bool scripted(const std::vector<std::string>& press, const std::string& key, int frame) {
+    for (const auto& p : press) {
+        int first = 0, last = 0;
+        auto at = p.find('@');
+        if (at == std::string::npos || p.substr(0, at) != key) continue;
+        if (std::sscanf(p.c_str() + at + 1, "%d-%d", &first, &last) == 2 && frame >= first && frame <= last) return true;
+        if (std::sscanf(p.c_str() + at + 1, "%d", &first) == 1 && last == 0 && frame == first) return true;
+    }
+    return false;
 }
 
 std::string pass_times(const FrameStats& s) {
@@ -98,6 +112,9 @@ int view(const ViewOptions& o) {
         glfwSetScrollCallback(presenter.window(), on_scroll);
         glfwSetKeyCallback(presenter.window(), on_key);
         bool side_by_side = o.side_by_side;
+        SnapTurn snap;
+        WorldScale world_scale(scene.world_scale);
+        double scale_first = scene.world_scale, scale_step_max = 0.0;
         double throttle = 1.0;   // the scroll wheel's share of the distance-proportional speed
         double last_x = 0.0, last_y = 0.0;
         glfwGetCursorPos(presenter.window(), &last_x, &last_y);
@@ -131,8 +148,22 @@ int view(const ViewOptions& o) {
                 thrust = o.autopilot;
             }
             if (glm::length(dir) > 0.0) dir = glm::normalize(dir);
+            // Arrow keys snap-turn (faded, about the camera); -/= shrink or grow the viewer.
+            const double step_dt = o.frames > 0 ? 1.0 / 90.0 : dt;
+            auto held = [&](int k, const char* name) { return key(k) > 0.0 || scripted(o.press, name, frames + 1); };
+            const double turn_stick = (held(GLFW_KEY_RIGHT, "right") ? 1.0 : 0.0) - (held(GLFW_KEY_LEFT, "left") ? 1.0 : 0.0);
+            const SnapTurnFrame snapped = snap.update(turn_stick, step_dt);
+            if (snapped.yaw_rad != 0.0) camera.turn(snapped.yaw_rad);
+            const double scale_stick = (held(GLFW_KEY_EQUAL, "grow") ? 1.0 : 0.0) - (held(GLFW_KEY_MINUS, "shrink") ? 1.0 : 0.0);
+            const double scale_before = world_scale.current();
+            world_scale.update(scale_stick, step_dt, camera.pose().position, stereo.ipd_m, flight->locomotion().head_radius_m(),
+                               flight->locomotion().guaranteed_clearance(camera.pose().position));
+            if (world_scale.current() != scale_before) {
+                flight->set_world_scale(world_scale.current());
+                scale_step_max = std::max(scale_step_max, std::abs(world_scale.current() / scale_before - 1.0));
+            }
             // Tests fly at a fixed 90 Hz so that runs repeat; people fly in real time.
-            camera.set_position(flight->update(camera.pose().position, dir, thrust, o.frames > 0 ? 1.0 / 90.0 : dt));
+            camera.set_position(flight->update(camera.pose().position, dir, thrust, step_dt));
             if (witness) witness->observe(camera.pose().position);
 
             std::string error;
@@ -141,6 +172,7 @@ int view(const ViewOptions& o) {
                 playing = std::move(*fresh);
                 scene = scene_of(*playing.pack);
                 flight = make_flight();
+                world_scale = WorldScale(scene.world_scale);
                 status = fmt::format("reloaded {} in {:.0f} ms + {:.0f} ms pipelines", playing.pack->manifest.name, playing.compile_ms,
                                      playing.pipelines_ms);
                 fmt::print("fgplay view: {}\n", status);
@@ -150,17 +182,18 @@ int view(const ViewOptions& o) {
                 fmt::print(stderr, "fgplay view: compile error (the previous pack keeps playing):\n{}\n", error);
             }
 
-            stereo.world_scale = scene.world_scale;
+            stereo.world_scale = world_scale.current();
             StereoViews views = make_stereo_views(camera.pose(), fov_of(scene), fov_of(scene), stereo);
-            playing.executor->set_frame(make_gpu_frame(views, frame, frames / 60.0, scene.world_scale,
+            playing.executor->set_frame(make_gpu_frame(views, frame, frames / 60.0, world_scale.current(),
                                                        static_cast<std::uint32_t>(frames)));
-            // Flying and mouse-look are both artificial motion: both drive the comfort vignette.
+            // Flying and mouse-look are both artificial motion: both drive the comfort vignette. A
+            // snap turn fades the image (misc2.y).
             GpuScene scene_gpu = make_gpu_scene(playing.pack->manifest.scene);
-            if (scene_gpu.misc[2] > 0.0f) {
+            if (scene_gpu.misc[2] > 0.0f)
                 scene_gpu.misc[2] = static_cast<float>(comfort_vignette(
-                    glm::length(flight->locomotion().velocity()) / scene.world_scale, turn, scene_gpu.misc[2]));
-                playing.executor->set_scene(scene_gpu);
-            }
+                    glm::length(flight->locomotion().velocity()) / world_scale.current(), turn, scene_gpu.misc[2]));
+            scene_gpu.misc2[1] = static_cast<float>(1.0 - snapped.brightness);
+            playing.executor->set_scene(scene_gpu);
             FrameStats stats = playing.executor->run();
             ++frames;
             const bool last_frame = o.frames > 0 && frames == o.frames;
@@ -184,6 +217,8 @@ int view(const ViewOptions& o) {
         }
         flight.reset();
         ctx.wait_idle();
+        fmt::print("snap turns: {}; world scale: {:.4g} -> {:.4g}, largest change per frame {:.2f} %\n", snap.turns(), scale_first,
+                   world_scale.current(), 100.0 * scale_step_max);
         if (witness) fmt::print("{}\n", witness->summary());
         if (ctx.validation_enabled()) {
             fmt::print("Vulkan validation: {} errors\n", ctx.validation_errors());

@@ -1,9 +1,11 @@
 #pragma once
 // `fgplay view`: a pack (or a graph, recompiled on save with --watch) in a desktop window.
 // Mouse-look with the left button held, WASD/QE to fly, the scroll wheel for speed, B for the
-// side-by-side stereo pair, Esc to quit. The title bar shows per-pass GPU times.
+// side-by-side stereo pair, Left/Right arrows for 90° snap turns (with a fade), -/= to shrink or
+// grow yourself (the world scale), Esc to quit. The title bar shows per-pass GPU times.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "frame/frame_settings.h"
 
@@ -22,6 +24,8 @@ struct ViewOptions {
     // Scripted input for tests: fly forward at this throttle (1 = the distance-proportional speed).
     double autopilot = 0.0;
     bool check_collisions = false;        // watch the head with the CPU twin and report
+    // Scripted keys for tests: "KEY@FIRST-LAST" frames held (KEY: left, right, shrink, grow).
+    std::vector<std::string> press;
 };
 
 int view(const ViewOptions& options);

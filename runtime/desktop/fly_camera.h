@@ -15,6 +15,8 @@ public:
 
     HeadPose pose() const;
     void set_position(const glm::dvec3& p) { position_ = p; }
+    // A snap turn: yaw about the camera itself (positive turns left, as about +y).
+    void turn(double yaw_rad) { yaw_ += yaw_rad; }
     glm::dvec3 forward() const;
 
 private:

@@ -16,6 +16,8 @@ void add_view_command(CLI::App& app, ViewCommand& c) {
     c.command->add_flag("--side-by-side", c.options.side_by_side, "start with both eyes side by side (key B toggles)");
     c.command->add_option("--screenshot", c.options.screenshot, "write the window's last frame to this PNG");
     c.command->add_option("--autopilot", c.options.autopilot, "fly forward at this throttle, 1 = normal speed (tests)");
+    c.command->add_option("--press", c.options.press,
+                          "scripted keys (tests): KEY@FIRST-LAST frames held, KEY one of left, right, shrink, grow");
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_flag("--validation", c.options.validation, "Vulkan validation layer on; errors fail the run");

@@ -19,6 +19,12 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
                         "keep the settings fixed instead of holding the frame budget");
     c.command->add_option("--budget-ms", c.options.budget_ms, "GPU time per frame to hold (default: the display period)");
     c.command->add_option("--fly", c.options.fly, "fly where you look at this throttle (1 = normal speed)");
+    c.command->add_option("--controller-speed", c.options.controller_speed,
+                          "throttle of a full trigger pull (flight along the controller's aim)")->capture_default_str();
+    c.command->add_flag_function("--no-controllers", [&c](std::int64_t) { c.options.controllers = false; },
+                                 "no OpenXR actions: gaze flight only");
+    c.command->add_flag_function("--no-wrap", [&c](std::int64_t) { c.options.wrap = false; },
+                                 "keep absolute coordinates in looping scenes (to compare)");
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");

@@ -13,9 +13,13 @@
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
 #include "locomotion/comfort_vignette.h"
+#include "locomotion/play_space.h"
 #include "locomotion/probed_flight.h"
+#include "locomotion/snap_turn.h"
+#include "locomotion/world_scale.h"
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
+#include "xr/controller_actions.h"
 #include "xr/eye_swapchain.h"
 #include "xr/frame_governor.h"
 #include "xr/visibility_mask.h"
@@ -33,6 +37,7 @@ glm::dquat to_glm(const XrQuaternionf& q) { return glm::dquat(q.w, q.x, q.y, q.z
 
 struct PlayStats {
     int frames = 0;
+    int dark_frames = 0;   // black at the middle of a snap turn: nothing rendered, no layer
     double gpu_ms_sum = 0.0;
     std::map<std::string, double> pass_ms_sum;
 };
@@ -46,6 +51,9 @@ public:
         scene_ = parse_scene_settings(&pack.manifest.scene, "/scene", ignore);
         origin_ = look_at(scene_.camera.position, scene_.camera.target, scene_.camera.up);
         scene_gpu_ = make_gpu_scene(pack.manifest.scene);
+        play_ = PlaySpace(origin_, scene_.world_scale);
+        scale_ = WorldScale(scene_.world_scale);
+        if (pack.manifest.period) period_ = glm::dvec3((*pack.manifest.period)[0], (*pack.manifest.period)[1], (*pack.manifest.period)[2]);
 
         XrGraphicsBindingVulkan2KHR binding = graphics_binding(ctx);
         XrSessionCreateInfo si{XR_TYPE_SESSION_CREATE_INFO};
@@ -57,6 +65,10 @@ public:
         space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
         space.poseInReferenceSpace.orientation.w = 1.0f;
         check(xrCreateReferenceSpace(session_, &space, &space_), "xrCreateReferenceSpace");
+        if (o.controllers) {
+            actions_ = std::make_unique<ControllerActions>(instance.handle(), session_);
+            fmt::print("controller bindings accepted for: {}\n", fmt::join(actions_->accepted_profiles(), ", "));
+        }
 
         std::uint32_t count = 0;
         check(xrEnumerateViewConfigurationViews(instance.handle(), instance.system(), XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO,
@@ -94,6 +106,7 @@ public:
         flight_.reset();
         executor_.reset();
         for (auto& s : swapchains_) s.reset();
+        actions_.reset();
         if (space_) xrDestroySpace(space_);
         if (session_) xrDestroySession(session_);
     }
@@ -113,7 +126,7 @@ public:
                 continue;
             }
             frame();
-            if (options_.frames > 0 && stats_.frames >= options_.frames && !exit_requested) {
+            if (options_.frames > 0 && stats_.frames + stats_.dark_frames >= options_.frames && !exit_requested) {
                 check(xrRequestExitSession(session_), "xrRequestExitSession");
                 exit_requested = true;
             }
@@ -131,6 +144,23 @@ public:
     const CollisionWitness* witness() const { return witness_.get(); }
     const FrameGovernor& governor() const { return *governor_; }
 
+    // What the controls did over the session, for the log.
+    std::string locomotion_summary() const {
+        std::string out = fmt::format("snap turns: {} ({} frames black)\n", snap_.turns(), stats_.dark_frames);
+        out += fmt::format("world scale: {:.4g} -> {:.4g} (eye separation {:.4g} -> {:.4g} scene units), largest change per "
+                           "frame {:.2f} %{}\n",
+                           scale_first_, play_.world_scale(), ipd_first_, ipd_last_, 100.0 * scale_step_max_,
+                           *scale_limit_ ? fmt::format(", held by the {}", scale_limit_) : std::string());
+        const glm::dvec3 axes = glm::inverse(origin_.orientation) * flown_;
+        out += fmt::format("flight: {:.3f} {:.3f} {:.3f} scene units along the scene camera's right, up, back; the head's "
+                           "largest coordinate {:.3g}\n",
+                           axes.x, axes.y, axes.z, head_extent_);
+        if (period_)
+            out += fmt::format("looping scene: period {:g} x {:g} x {:g}, {} wraps{}\n", period_->x, period_->y, period_->z, wraps_,
+                               options_.wrap ? "" : " (wrapping off)");
+        return out;
+    }
+
 private:
     SessionAction poll_events() {
         while (true) {
@@ -139,6 +169,10 @@ private:
             if (r == XR_EVENT_UNAVAILABLE) return SessionAction::None;
             if (event.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) return lifecycle_.on_instance_loss();
             if (event.type == XR_TYPE_EVENT_DATA_VISIBILITY_MASK_CHANGED_KHR) masks_dirty_ = true;
+            if (event.type == XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED && actions_) {
+                fmt::print("controllers: {}\n", actions_->current_profiles());
+                std::fflush(stdout);
+            }
             if (event.type != XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) continue;
             const auto& changed = reinterpret_cast<const XrEventDataSessionStateChanged&>(event);
             switch (lifecycle_.on_state(changed.state)) {
@@ -181,7 +215,8 @@ private:
         check(xrEndFrame(session_, &ei), "xrEndFrame");
     }
 
-    // Renders both eyes for the views predicted at `time`; false when tracking is lost.
+    // Renders both eyes for the views predicted at `time`; false (no layer) when tracking is lost
+    // or a snap turn has the view at black.
     bool render(XrTime time, XrDuration period_ns, XrCompositionLayerProjectionView* projection) {
         XrViewLocateInfo li{XR_TYPE_VIEW_LOCATE_INFO};
         li.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
@@ -194,20 +229,65 @@ private:
         const XrViewStateFlags needed = XR_VIEW_STATE_ORIENTATION_VALID_BIT | XR_VIEW_STATE_POSITION_VALID_BIT;
         if ((vs.viewStateFlags & needed) != needed || count != 2) return false;
 
-        // Tracking space (metres, the LOCAL space) into the scene: the scene camera is the origin.
-        glm::dvec3 eye_l = to_glm(views[0].pose.position), eye_r = to_glm(views[1].pose.position);
-        HeadPose head;
-        head.orientation = origin_.orientation * glm::normalize(to_glm(views[0].pose.orientation));
-        head.position = origin_.position + offset_ + scene_.world_scale * (origin_.orientation * (0.5 * (eye_l + eye_r)));
-        // Gaze-directed flight moves the tracking space through the scene, as far as the probes allow.
+        // Tracking space (metres, the LOCAL space) into the scene through the play space: the scene
+        // camera is its origin; flight, snap turns, world scale and wrapping move it.
+        const glm::dvec3 eye_l = to_glm(views[0].pose.position), eye_r = to_glm(views[1].pose.position);
+        const glm::dvec3 tracked_head = 0.5 * (eye_l + eye_r);
         const double dt = last_time_ ? static_cast<double>(time - last_time_) * 1e-9 : 0.0;
         last_time_ = time;
-        glm::dvec3 gaze = glm::mat3_cast(head.orientation) * glm::dvec3(0.0, 0.0, -1.0);
-        glm::dvec3 moved = flight_->update(head.position, gaze, options_.fly, dt);
-        offset_ += moved - head.position;
+        const ControllerState input = actions_ ? actions_->sync(space_, time) : ControllerState{};
+
+        const SnapTurnFrame turn = snap_.update(input.turn.x, dt);
+        if (turn.yaw_rad != 0.0) play_.turn_about(tracked_head, turn.yaw_rad);
+        const double ipd_m = glm::length(eye_r - eye_l);
+        const double before = play_.world_scale();
+        const double scale = scale_.update(input.scale.y, dt, play_.point(tracked_head), ipd_m, flight_->locomotion().head_radius_m(),
+                                           flight_->locomotion().guaranteed_clearance(play_.point(tracked_head)));
+        if (scale != before) {
+            play_.rescale_about(tracked_head, scale);
+            flight_->set_world_scale(scale);
+            scale_step_max_ = std::max(scale_step_max_, std::abs(scale / before - 1.0));
+            if (*scale_.limited_by()) scale_limit_ = scale_.limited_by();
+        }
+        HeadPose head;
+        head.orientation = play_.orientation(glm::normalize(to_glm(views[0].pose.orientation)));
+        head.position = play_.point(tracked_head);
+        // Flight: the trigger flies along the controller's aim (the gaze when the aim is not
+        // tracked); without it, `--fly` flies along the gaze.
+        glm::dvec3 direction = glm::mat3_cast(head.orientation) * glm::dvec3(0.0, 0.0, -1.0);
+        double throttle = options_.fly;
+        if (input.fly > 0.05) {
+            throttle = input.fly * options_.controller_speed;
+            if (input.aim_valid) direction = play_.direction(input.aim_orientation * glm::dvec3(0.0, 0.0, -1.0));
+        }
+        glm::dvec3 moved = flight_->update(head.position, direction, throttle, dt);
+        play_.move(moved - head.position);
+        flown_ += moved - head.position;
         head.position = moved;
+        // A looping scene: whole periods off the head before it is rendered, so its coordinates
+        // stay inside one cell however far it flies. The probes' answers move with it.
+        if (period_ && options_.wrap) {
+            const glm::dvec3 shift = play_.wrap(tracked_head, *period_);
+            if (shift != glm::dvec3(0.0)) {
+                flight_->translate(-shift);
+                head.position -= shift;
+                ++wraps_;
+            }
+        }
         if (witness_) witness_->observe(head.position);
-        stereo_.ipd_m = glm::length(eye_r - eye_l);
+        for (int i = 0; i < 3; ++i) head_extent_ = std::max(head_extent_, std::abs(head.position[i]));
+        stereo_.ipd_m = ipd_m;
+        stereo_.world_scale = play_.world_scale();
+        if (ipd_first_ < 0.0) {
+            ipd_first_ = ipd_m * play_.world_scale();
+            scale_first_ = before;
+        }
+        ipd_last_ = ipd_m * play_.world_scale();
+        // Black at the middle of a snap turn: the compositor shows black without a layer.
+        if (turn.brightness <= 0.0) {
+            ++stats_.dark_frames;
+            return false;
+        }
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
         if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {
@@ -222,7 +302,7 @@ private:
         }
         if (masks_dirty_) update_lens_masks(sv);
         if (first_time_ == 0) first_time_ = time;
-        GpuFrame gpu = make_gpu_frame(sv, frame_, static_cast<double>(time - first_time_) * 1e-9, scene_.world_scale,
+        GpuFrame gpu = make_gpu_frame(sv, frame_, static_cast<double>(time - first_time_) * 1e-9, play_.world_scale(),
                                       static_cast<std::uint32_t>(stats_.frames));
         // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
         // pixels outside it are never marched.
@@ -231,11 +311,15 @@ private:
                 gpu.views[eye].lens = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v),
                                        static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
         executor_->set_frame(gpu);
-        // Flight (not the tracked head) drives the comfort vignette, where the scene has one.
-        if (scene_gpu_.misc[2] > 0.0f) {
+        // Flight (not the tracked head) drives the comfort vignette, where the scene has one; a snap
+        // turn fades the image (misc2.y) on its way to and from black.
+        if (scene_gpu_.misc[2] > 0.0f || turn.brightness < 1.0 || faded_) {
             GpuScene sc = scene_gpu_;
-            sc.misc[2] = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / scene_.world_scale, 0.0,
-                                                             scene_gpu_.misc[2]));
+            if (scene_gpu_.misc[2] > 0.0f)
+                sc.misc[2] = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / play_.world_scale(),
+                                                                 0.0, scene_gpu_.misc[2]));
+            sc.misc2[1] = static_cast<float>(1.0 - turn.brightness);
+            faded_ = turn.brightness < 1.0;
             executor_->set_scene(sc);
         }
         FrameStats fs = executor_->run();
@@ -322,7 +406,17 @@ private:
     std::unique_ptr<FrameExecutor> executor_;
     std::uint32_t centre_width_ = 0, centre_height_ = 0;
     XrTime first_time_ = 0, last_time_ = 0;
-    glm::dvec3 offset_{0.0};
+    PlaySpace play_{HeadPose{}, 1.0};
+    std::unique_ptr<ControllerActions> actions_;
+    SnapTurn snap_;
+    WorldScale scale_{1.0};
+    std::optional<glm::dvec3> period_;
+    bool faded_ = false;
+    int wraps_ = 0;
+    glm::dvec3 flown_{0.0};
+    double head_extent_ = 0.0;
+    double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0, scale_step_max_ = 0.0;
+    const char* scale_limit_ = "";
     std::unique_ptr<ProbedFlight> flight_;
     std::unique_ptr<FrameGovernor> governor_;
     std::uint32_t base_width_ = 0, base_height_ = 0;
@@ -371,6 +465,7 @@ int play_xr(const XrPlayOptions& o) {
                     fmt::print("mean GPU time per frame:{}\n", passes.substr(0, passes.size() - 1));
                 }
                 fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
+                fmt::print("{}", player.locomotion_summary());
                 if (player.witness()) fmt::print("{}\n", player.witness()->summary());
                 if (o.governor)
                     fmt::print("governor: ended at level {} of {} ({})\n", player.governor().level(),

@@ -4,6 +4,7 @@
 // submitted as a projection layer.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "frame/frame_settings.h"
@@ -23,6 +24,9 @@ struct XrPlayOptions {
     double budget_ms = 0.0;              // 0 = the display period the runtime predicts
     double fly = 0.0;                    // gaze-directed flight at this throttle (1 = normal speed)
     bool check_collisions = false;       // watch the head with the CPU twin and report
+    bool controllers = true;             // controller input through OpenXR actions
+    double controller_speed = 1.0;       // the trigger's full pull, as a throttle
+    bool wrap = true;                    // wrap the head by whole periods in looping scenes
 };
 
 // Exit codes: 0 clean, 1 error (no runtime, validation errors, ...), 2 the session was lost.

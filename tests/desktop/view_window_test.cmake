@@ -2,6 +2,21 @@
 # window presented, and no Vulkan validation errors.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
+if(CASE STREQUAL "keys")
+  # The right arrow held for two frames, then "-" held: one faded snap turn and a smooth shrink.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                          ${XVFB_RUN} -a -s "-screen 0 320x240x24"
+                          ${FGPLAY} view ${PACK} --frames 30 --size 32x32 --press right@2-3 --press shrink@1-30 --validation
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "Vulkan validation: 0 errors")
+    message(FATAL_ERROR "fgplay view failed (${rc})")
+  endif()
+  if(NOT out MATCHES "snap turns: 1; world scale: 1 -> 0\\.[6-8][0-9]*, largest change per frame [01]\\.[0-9]+ %")
+    message(FATAL_ERROR "the keys did not snap-turn once and shrink the viewer smoothly")
+  endif()
+  return()
+endif()
 if(CASE STREQUAL "flight")
   # Autopilot straight ahead at 30 times the normal speed: the probes must stop it at the surface,
   # a head radius (0.05) away.

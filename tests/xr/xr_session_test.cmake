@@ -29,11 +29,63 @@ elseif(CASE STREQUAL "the_governor_drops_to_the_floor_under_an_impossible_budget
   list(APPEND env FG_XR_TEST_PERIODS=0.01:45,1000)
   list(APPEND args --frames 100)
   set(expect_frames 100)
+elseif(CASE STREQUAL "the_trigger_flies_along_the_controller_aim_through_openxr_actions")
+  # Touch controllers; the right hand aims 90 degrees to the left of where the head looks.
+  file(WRITE ${WORK}/input.json [=[{"profile": "oculus/touch_controller", "keys": [{"t": 0, "right": {"trigger": 1.0, "aim": {"position": [0.2, -0.3, -0.3], "yaw_deg": 90}}}]}]=])
+  list(APPEND env FG_XR_TEST_INPUT=${WORK}/input.json)
+  list(APPEND args --frames 12 --controller-speed 5)
+  set(expect_frames 12)
+elseif(CASE STREQUAL "a_simple_controller_flies_with_select")
+  file(WRITE ${WORK}/input.json [=[{"profile": "khr/simple_controller", "keys": [{"t": 0, "right": {"select": true, "aim": {"position": [0.2, -0.3, -0.3]}}}]}]=])
+  list(APPEND env FG_XR_TEST_INPUT=${WORK}/input.json)
+  list(APPEND args --frames 6 --controller-speed 5)
+  set(expect_frames 6)
+elseif(CASE STREQUAL "a_snap_turn_fades_to_black_and_then_shows_what_a_head_turned_ninety_degrees_sees")
+  # The head stands 10 cm right of the play space's origin: a turn about the origin would move it.
+  # The reference: the same head, physically turned 90 degrees right, no controller input.
+  file(WRITE ${WORK}/turned.json [=[{"keys": [{"t": 0, "position": [0.1, 0, 0.05], "yaw_deg": -90}]}]=])
+  file(WRITE ${WORK}/poses.json [=[{"keys": [{"t": 0, "position": [0.1, 0, 0.05], "yaw_deg": 0}]}]=])
+  file(WRITE ${WORK}/input.json [=[{"keys": [{"t": 0.04, "right": {"thumbstick": [1, 0]}}, {"t": 0.15, "right": {"thumbstick": [0, 0]}}]}]=])
+  set(reference_env FG_XR_TEST_POSES=${WORK}/turned.json)
+  set(reference_args --frames 4 --no-governor)
+  list(APPEND env FG_XR_TEST_POSES=${WORK}/poses.json FG_XR_TEST_INPUT=${WORK}/input.json)
+  list(APPEND args --frames 30 --no-governor)
+  set(expect_frames 29)   # the black frame has no layer
+elseif(CASE STREQUAL "shrinking_yourself_with_the_left_stick_is_smooth_and_never_enters_the_fractal")
+  # Full left stick down while flying at the bulb at high speed; the head only turns.
+  file(WRITE ${WORK}/poses.json [=[{"keys": [{"t": 0, "position": [0, 0, 0]}, {"t": 0.5, "position": [0, 0, 0], "yaw_deg": 6, "pitch_deg": 3}]}]=])
+  file(WRITE ${WORK}/input.json [=[{"keys": [{"t": 0, "left": {"thumbstick": [0, -1]}, "right": {"trigger": 1.0}}]}]=])
+  list(APPEND env FG_XR_TEST_POSES=${WORK}/poses.json FG_XR_TEST_INPUT=${WORK}/input.json)
+  list(APPEND args --frames 40 --controller-speed 30 --check-collisions)
+  set(expect_frames 40)
+elseif(CASE STREQUAL "a_long_flight_through_a_looping_scene_stays_in_one_cell_and_the_image_does_not_change")
+  # Along a tunnel of the looping Menger lattice (period 2); the reference flies the same way
+  # without wrapping, its coordinates growing.
+  file(WRITE ${WORK}/poses.json [=[{"keys": [{"t": 0, "position": [0, 0, 0]}]}]=])
+  file(WRITE ${WORK}/input.json [=[{"keys": [{"t": 0, "right": {"trigger": 1.0, "aim": {"position": [0, 0, 0]}}}]}]=])
+  set(reference_env FG_XR_TEST_POSES=${WORK}/poses.json FG_XR_TEST_INPUT=${WORK}/input.json)
+  list(APPEND env ${reference_env})
+  set(reference_args --frames 120 --no-governor --controller-speed 40 --no-wrap)
+  list(APPEND args --frames 120 --no-governor --controller-speed 40 --check-collisions)
+  set(expect_frames 120)
 elseif(CASE STREQUAL "without_a_runtime_fgplay_xr_says_what_is_missing_and_suggests_view")
   set(env XR_RUNTIME_JSON=${WORK}/no_such_runtime.json XDG_CONFIG_DIRS=${WORK} XDG_CONFIG_HOME=${WORK})
   set(expect_rc 1)
 else()
   message(FATAL_ERROR "unknown case ${CASE}")
+endif()
+
+# A reference run first, where the case compares its last frame with another session's.
+if(DEFINED reference_args)
+  file(MAKE_DIRECTORY ${WORK}/reference)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env XR_RUNTIME_JSON=${RUNTIME_JSON} FG_XR_TEST_DUMP=${WORK}/reference
+                          MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache ${reference_env} ${FGPLAY} xr ${PACK} ${reference_args}
+                  RESULT_VARIABLE ref_rc OUTPUT_VARIABLE ref_out ERROR_VARIABLE ref_err TIMEOUT 240)
+  message("reference run:\n${ref_out}${ref_err}")
+  if(NOT ref_rc EQUAL 0 OR NOT EXISTS ${WORK}/reference/xr_left.png)
+    message(FATAL_ERROR "the reference run failed")
+  endif()
+  list(APPEND env FG_XR_TEST_REFERENCE=${WORK}/reference/xr_left.png)
 endif()
 
 execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} ${FGPLAY} ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out
@@ -95,6 +147,7 @@ if(CASE MATCHES "^the_governor")
     message(FATAL_ERROR "the governor did not reach the floor under the impossible budget, or did not climb back")
   endif()
 endif()
+include(${CMAKE_CURRENT_LIST_DIR}/xr_locomotion_checks.cmake)
 if(CASE MATCHES "^a_lost_session")
   if(NOT err MATCHES "the OpenXR session was lost" OR NOT states MATCHES "loss_pending")
     message(FATAL_ERROR "no clear message about the lost session")

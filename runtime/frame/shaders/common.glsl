@@ -33,7 +33,7 @@ layout(set = 0, binding = 1, std140) uniform FgScene {
     vec4 glow;           // rgb colour * intensity, a falloff distance
     vec4 bounds;         // xyz centre, w radius: rays outside this sphere miss
     vec4 misc;           // x exposure, y far limit, z vignette strength, w foveation inner radius
-    vec4 misc2;          // x foveation blend, yzw unused
+    vec4 misc2;          // x foveation blend, y fade to black (0 none, 1 black), zw unused
 } fg_scene;
 
 // How a pixel becomes a ray (fg_frame.info.z, the same for every pass of a frame): the view's

@@ -46,5 +46,6 @@ void main()
         color *= 1.0 - fg_scene.misc.z * smoothstep(0.3, 1.4, dot(q, q));
     }
 #endif
-    imageStore(fg_final, pixel, vec4(fg_tonemap(color), 1.0));
+    // The snap-turn fade (misc2.y: 0 none, 1 black) scales the displayed image linearly.
+    imageStore(fg_final, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.misc2.y), 1.0));
 }

@@ -148,6 +148,7 @@ void main()
 #ifdef FG_HAS_POST
     imageStore(fg_color, pixel, vec4(color, 1.0));
 #else
-    imageStore(fg_color, pixel, vec4(fg_tonemap(color), 1.0));
+    // The snap-turn fade (misc2.y: 0 none, 1 black) scales the displayed image linearly.
+    imageStore(fg_color, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.misc2.y), 1.0));
 #endif
 }

@@ -8,6 +8,10 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBIW_ASSERT(x)
 #include <stb/stb_image_write.h>
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_PNG
+#include <stb/stb_image.h>
 
 namespace fgxrt {
 
@@ -195,6 +199,33 @@ void write_eye_png(const std::string& path, const EyeImage& image) {
         for (std::size_t i = 0; i + 3 < rgb.rgba.size(); i += 4) std::swap(rgb.rgba[i], rgb.rgba[i + 2]);
     stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 4, rgb.rgba.data(),
                    static_cast<int>(image.width * 4));
+}
+
+ImageDifference compare_with_png(const EyeImage& image, const std::string& png_path) {
+    ImageDifference d;
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* png = stbi_load(png_path.c_str(), &w, &h, &channels, 4);
+    if (!png) return d;
+    const bool bgr = image.format == VK_FORMAT_B8G8R8A8_UNORM || image.format == VK_FORMAT_B8G8R8A8_SRGB;
+    if (static_cast<std::uint32_t>(w) == image.width && static_cast<std::uint32_t>(h) == image.height &&
+        image.rgba.size() == static_cast<std::size_t>(w) * h * 4) {
+        std::size_t n = static_cast<std::size_t>(w) * h, differ = 0;
+        int worst = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            int pixel_worst = 0;
+            for (int c = 0; c < 3; ++c) {
+                int mine = image.rgba[4 * i + (bgr ? 2 - c : c)];
+                pixel_worst = std::max(pixel_worst, std::abs(mine - int(png[4 * i + c])));
+            }
+            worst = std::max(worst, pixel_worst);
+            if (pixel_worst > 2) ++differ;
+        }
+        d.compared = true;
+        d.differ_fraction = static_cast<double>(differ) / static_cast<double>(n);
+        d.max_diff = worst;
+    }
+    stbi_image_free(png);
+    return d;
 }
 
 }  // namespace fgxrt

@@ -55,6 +55,14 @@ private:
     void* mapped_ = nullptr;
 };
 
+// An eye image against a PNG of the same size (RGB; BGRA images are swizzled first).
+struct ImageDifference {
+    bool compared = false;            // false: no such PNG, or a different size
+    double differ_fraction = 1.0;     // pixels with some channel more than 2 levels apart
+    int max_diff = 255;
+};
+ImageDifference compare_with_png(const EyeImage& image, const std::string& png_path);
+
 // A PNG of an eye image, for looking at what the runtime received ($FG_XR_TEST_DUMP).
 void write_eye_png(const std::string& path, const EyeImage& image);
 

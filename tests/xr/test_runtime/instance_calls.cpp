@@ -59,6 +59,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
         }
     }
     if (!inst->poses.error().empty()) inst->report.fail(0, inst->poses.error());
+    if (!inst->input.error().empty()) inst->report.fail(0, inst->input.error());
     g_instance = std::move(inst);
     *out = reinterpret_cast<XrInstance>(g_instance.get());
     return XR_SUCCESS;

@@ -20,7 +20,7 @@ XRAPI_ATTR XrResult XRAPI_CALL GetInstanceProcAddr(XrInstance handle, const char
         std::strcmp(name, "xrEnumerateInstanceExtensionProperties") != 0 &&
         std::strcmp(name, "xrEnumerateApiLayerProperties") != 0)
         return XR_ERROR_HANDLE_INVALID;
-    for (const auto* table : {&kInstanceFunctions, &kSessionFunctions})
+    for (const auto* table : {&kInstanceFunctions, &kSessionFunctions, &kActionFunctions})
         for (const auto& f : *table)
             if (std::strcmp(f.name, name) == 0) {
                 *function = f.function;

@@ -3,6 +3,7 @@
 // One instance at a time is enough for fgplay.
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <openxr/openxr_platform.h>
 
 #include "frame_inspector.h"
+#include "input_script.h"
 #include "pose_script.h"
 #include "runtime_report.h"
 
@@ -23,6 +25,26 @@ inline constexpr XrSystemId kSystemId = 1;
 inline constexpr XrTime kPeriodNs = 11'111'111;   // 90 Hz
 
 struct Swapchain;
+struct ActionSet;
+
+struct Action {
+    ActionSet* set = nullptr;
+    std::string name, localized;
+    XrActionType type = XR_ACTION_TYPE_FLOAT_INPUT;
+    std::vector<XrPath> subactions;
+    // As of the last xrSyncActions: each bound component's value, and the combined state.
+    std::vector<std::pair<XrPath, ComponentValue>> bound;
+    bool active = false, changed = false;
+    float x = 0.0f, y = 0.0f;
+    XrTime last_change = 0;
+};
+
+struct ActionSet {
+    std::string name, localized;
+    std::uint32_t priority = 0;
+    bool attached = false;
+    std::vector<std::unique_ptr<Action>> actions;
+};
 
 struct Session {
     VkInstance vk_instance = VK_NULL_HANDLE;
@@ -35,6 +57,12 @@ struct Session {
     bool frame_waited = false, frame_begun = false;
     std::vector<std::unique_ptr<Swapchain>> swapchains;
     std::unique_ptr<FrameInspector> inspector;
+    // Input: the attached action sets, the interaction profile in use, the last sync's time.
+    bool attached = false;
+    std::vector<ActionSet*> attached_sets;
+    XrPath profile = XR_NULL_PATH;
+    XrTime synced_time = 0;
+    bool synced_focused = false;
 };
 
 struct Swapchain {
@@ -51,6 +79,8 @@ struct Space {
     Session* session = nullptr;
     XrReferenceSpaceType type = XR_REFERENCE_SPACE_TYPE_LOCAL;
     XrPosef pose{};
+    Action* action = nullptr;                 // an action space: this action's pose
+    XrPath subaction = XR_NULL_PATH;
 };
 
 struct Instance {
@@ -60,6 +90,10 @@ struct Instance {
     std::vector<std::unique_ptr<Session>> sessions;
     std::vector<std::unique_ptr<Space>> spaces;
     PoseScript poses;
+    InputScript input;
+    std::vector<std::string> paths;           // XrPath n is paths[n - 1]
+    std::vector<std::unique_ptr<ActionSet>> action_sets;
+    std::map<XrPath, std::vector<std::pair<Action*, XrPath>>> suggested;   // profile -> (action, binding)
     EventScript script;
     RuntimeReport report;
     XrTime clock = 1'000'000'000;
@@ -72,6 +106,14 @@ Instance* live_instance();
 Session* session(XrSession handle);
 Swapchain* swapchain(XrSwapchain handle);
 Space* space(XrSpace handle);
+ActionSet* action_set(XrActionSet handle);
+Action* action(XrAction handle);
+// The path's string, or null for XR_NULL_PATH or a path never made.
+const std::string* path_string(XrPath path);
+XrPath intern_path(const std::string& text);
+double session_seconds(const Session& s, XrTime t);
+// Every action space of the session's pose actions, and reference spaces, located in `base`.
+XrResult locate(Session& s, Space& space, Space& base, XrTime time, XrSpaceLocation* location);
 
 void push_state(Session& s, XrSessionState state);
 
@@ -82,5 +124,6 @@ struct NamedFunction {
 };
 extern const std::vector<NamedFunction> kInstanceFunctions;
 extern const std::vector<NamedFunction> kSessionFunctions;
+extern const std::vector<NamedFunction> kActionFunctions;
 
 }  // namespace fgxrt

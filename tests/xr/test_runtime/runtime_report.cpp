@@ -33,6 +33,12 @@ void RuntimeReport::write() const {
     j["instance_destroyed"] = instance_destroyed;
     j["last_frame"] = {{"mean_luma_left", mean_luma_left}, {"mean_luma_right", mean_luma_right},
                        {"eyes_differ_fraction", eyes_differ_fraction}};
+    j["frame_luma"] = frame_luma;
+    j["suggested_profiles"] = suggested_profiles;
+    j["interaction_profile"] = interaction_profile;
+    j["actions_synced"] = actions_synced;
+    if (reference_compared)
+        j["reference"] = {{"differ_fraction", reference_differ_fraction}, {"max_diff", reference_max_diff}};
     std::ofstream(path) << j.dump(2) << "\n";
 }
 

@@ -16,6 +16,15 @@ struct RuntimeReport {
     bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;
     double mean_luma_left = 0.0, mean_luma_right = 0.0;   // of the last checked frame
     double eyes_differ_fraction = 0.0;                     // of the last checked frame
+    std::vector<double> frame_luma;          // left eye's mean luma per ended frame; -1: no layer
+    // Input: the profiles fgplay suggested bindings for, the one in use, xrSyncActions calls.
+    std::vector<std::string> suggested_profiles;
+    std::string interaction_profile = "none";
+    int actions_synced = 0;
+    // $FG_XR_TEST_REFERENCE: the last checked left eye against a PNG of the same size.
+    bool reference_compared = false;
+    double reference_differ_fraction = 1.0;   // pixels with a channel more than 2 levels off
+    int reference_max_diff = 255;
 
     void fail(int frame, const std::string& what);
     void write() const;   // to $FG_XR_TEST_REPORT, if set

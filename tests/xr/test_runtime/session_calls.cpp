@@ -35,7 +35,7 @@ XrResult two_call(std::uint32_t capacity, std::uint32_t* count, T* out, std::siz
     return XR_SUCCESS;
 }
 
-double seconds(const Session& s, XrTime t) { return static_cast<double>(t - s.begin_time) * 1e-9; }
+double seconds(const Session& s, XrTime t) { return session_seconds(s, t); }
 
 bool pose_close(const XrPosef& a, const XrPosef& b) {
     auto d = [](float x, float y) { return std::abs(x - y); };
@@ -349,7 +349,10 @@ void inspect(Session& s, const XrFrameEndInfo& info) {
     for (std::uint32_t i = 0; i < info.layerCount; ++i)
         if (info.layers[i] && info.layers[i]->type == XR_TYPE_COMPOSITION_LAYER_PROJECTION)
             projection = reinterpret_cast<const XrCompositionLayerProjection*>(info.layers[i]);
-    if (!projection) return;
+    if (!projection) {
+        report.frame_luma.push_back(-1.0);   // nothing to show: the compositor shows black
+        return;
+    }
     ++report.frames_with_layers;
     ++report.frames_checked;
     std::size_t failures_before = report.failures.size();
@@ -392,6 +395,13 @@ void inspect(Session& s, const XrFrameEndInfo& info) {
     report.mean_luma_left = verdict.mean_luma[0];
     report.mean_luma_right = verdict.mean_luma[1];
     report.eyes_differ_fraction = verdict.eyes_differ_fraction;
+    report.frame_luma.push_back(verdict.mean_luma[0]);
+    if (const char* reference = std::getenv("FG_XR_TEST_REFERENCE")) {
+        ImageDifference d = compare_with_png(eyes[0], reference);
+        report.reference_compared = d.compared;
+        report.reference_differ_fraction = d.differ_fraction;
+        report.reference_max_diff = d.max_diff;
+    }
     if (!bad && report.failures.size() == failures_before) ++report.frames_good;
     if (const char* dump = std::getenv("FG_XR_TEST_DUMP")) {
         write_eye_png(std::string(dump) + "/xr_left.png", eyes[0]);
@@ -457,6 +467,8 @@ XRAPI_ATTR XrResult XRAPI_CALL GetVisibilityMaskKHR(XrSession handle, XrViewConf
 #define FG_FN(name) {"xr" #name, reinterpret_cast<PFN_xrVoidFunction>(&name)}
 
 }  // namespace
+
+double session_seconds(const Session& s, XrTime t) { return static_cast<double>(t - s.begin_time) * 1e-9; }
 
 Session* session(XrSession handle) {
     Instance* inst = live_instance();
