@@ -33,6 +33,10 @@ void RuntimeReport::write() const {
     j["instance_destroyed"] = instance_destroyed;
     j["last_frame"] = {{"mean_luma_left", mean_luma_left}, {"mean_luma_right", mean_luma_right},
                        {"eyes_differ_fraction", eyes_differ_fraction}};
+    j["depth_layer"] = {{"frames_with_depth", frames_with_depth},
+                        {"format", depth_format},
+                        {"sky_fraction_left", sky_fraction[0]},
+                        {"sky_fraction_right", sky_fraction[1]}};
     std::ofstream(path) << j.dump(2) << "\n";
 }
 

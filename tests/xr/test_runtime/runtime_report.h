@@ -16,6 +16,9 @@ struct RuntimeReport {
     bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;
     double mean_luma_left = 0.0, mean_luma_right = 0.0;   // of the last checked frame
     double eyes_differ_fraction = 0.0;                     // of the last checked frame
+    int frames_with_depth = 0;                             // XR_KHR_composition_layer_depth on both views
+    std::string depth_format;
+    double sky_fraction[2] = {0.0, 0.0};                   // of the last frame's depth: pixels at maxDepth
 
     void fail(int frame, const std::string& what);
     void write() const;   // to $FG_XR_TEST_REPORT, if set
