@@ -36,6 +36,7 @@ glm::dquat to_glm(const XrQuaternionf& q) { return glm::dquat(q.w, q.x, q.y, q.z
 struct PlayStats {
     int frames = 0;
     double gpu_ms_sum = 0.0;
+    double depth_ms_sum = 0.0;   // wall time of both eyes' depth layer: conversion pass, copy, wait
     std::map<std::string, double> pass_ms_sum;
 };
 
@@ -135,6 +136,7 @@ public:
     const LensEllipse& lens(int eye) const { return lenses_[eye]; }
     const CollisionWitness* witness() const { return witness_.get(); }
     const FrameGovernor& governor() const { return *governor_; }
+    bool has_depth_layer() const { return depth_[0] != nullptr; }
 
 private:
     SessionAction poll_events() {
@@ -248,12 +250,14 @@ private:
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
         const View* rendered[2] = {&sv.left, &sv.right};
+        const auto depth_start = std::chrono::steady_clock::now();
         for (int eye = 0; eye < 2 && depth_[eye]; ++eye) {
             depth_[eye]->present(ctx_, executor_->image(eye ? "depth.right" : "depth.left"), rendered[eye]->fov, scene_.world_scale,
                                  depth_projection_);
             depth_[eye]->describe(depth_info_[eye], depth_projection_);
             projection[eye].next = &depth_info_[eye];
         }
+        if (depth_[0]) stats_.depth_ms_sum += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - depth_start).count();
         for (int eye = 0; eye < 2; ++eye) {
             projection[eye].pose = views[eye].pose;
             projection[eye].fov = views[eye].fov;
@@ -424,6 +428,9 @@ int play_xr(const XrPlayOptions& o) {
                     for (const auto& [pass, ms] : s.pass_ms_sum) passes += fmt::format(" {} {:.2f} ms,", pass, ms / s.frames);
                     fmt::print("mean GPU time per frame:{}\n", passes.substr(0, passes.size() - 1));
                 }
+                if (player.has_depth_layer() && s.frames > 0)
+                    fmt::print("depth layer: {} frames, {:.2f} ms per frame for both eyes (conversion pass, copy, wait)\n", s.frames,
+                               s.depth_ms_sum / s.frames);
                 fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
                 if (player.witness()) fmt::print("{}\n", player.witness()->summary());
                 if (o.governor)
