@@ -251,8 +251,10 @@ private:
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
         const View* rendered[2] = {&sv.left, &sv.right};
         const auto depth_start = std::chrono::steady_clock::now();
+        // Metres follow the viewer's current scale; the far plane stays the march's far limit.
+        depth_projection_.far_m = static_cast<float>(scene_.max_distance / stereo_.world_scale);
         for (int eye = 0; eye < 2 && depth_[eye]; ++eye) {
-            depth_[eye]->present(ctx_, executor_->image(eye ? "depth.right" : "depth.left"), rendered[eye]->fov, scene_.world_scale,
+            depth_[eye]->present(ctx_, executor_->image(eye ? "depth.right" : "depth.left"), rendered[eye]->fov, stereo_.world_scale,
                                  depth_projection_);
             depth_[eye]->describe(depth_info_[eye], depth_projection_);
             projection[eye].next = &depth_info_[eye];
