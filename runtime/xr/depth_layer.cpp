@@ -28,17 +28,33 @@ layout(push_constant) uniform FgDepthPush {
 
 float window_depth(uint index)
 {
+    // The colour blit filters linearly when the render size differs from the swapchain's: the depth
+    // takes the nearest hit among the render pixels that blit blends, so a pixel whose colour shows
+    // any of the fractal is not sky. At equal sizes that is the one render pixel.
     uvec2 out_px = uvec2(index % pc.size.x, index / pc.size.x);
-    ivec2 src = ivec2((vec2(out_px) + 0.5) * vec2(pc.size.zw) / vec2(pc.size.xy));
-    src = clamp(src, ivec2(0), ivec2(pc.size.zw) - 1);
-    float t = imageLoad(fg_depth, src).x;
+    vec2 p = (vec2(out_px) + 0.5) * vec2(pc.size.zw) / vec2(pc.size.xy) - 0.5;
+    ivec2 base = ivec2(floor(p));
+    vec2 f = p - vec2(base);
+    float t = -1.0;
+    ivec2 src = clamp(base, ivec2(0), ivec2(pc.size.zw) - 1);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+            if (weight <= 1e-4) continue;
+            ivec2 s = clamp(base + ivec2(i, j), ivec2(0), ivec2(pc.size.zw) - 1);
+            float ts = imageLoad(fg_depth, s).x;
+            if (ts >= 0.0 && (t < 0.0 || ts < t)) {
+                t = ts;
+                src = s;
+            }
+        }
     if (t < 0.0) return pc.range2.x;   // the sky: exactly maxDepth
     vec2 uv = (vec2(src) + 0.5) / vec2(pc.size.zw);
     float tx = mix(pc.tan_fov.x, pc.tan_fov.y, uv.x), ty = mix(pc.tan_fov.w, pc.tan_fov.z, uv.y);
     // Distance along the ray in scene units -> distance along the forward axis in metres.
     float z = t * inversesqrt(1.0 + tx * tx + ty * ty) / pc.range.z;
-    float n = pc.range.x, f = pc.range.y;
-    float d = clamp(f / (f - n) * (1.0 - n / max(z, n)), 0.0, 1.0);
+    float n = pc.range.x, far = pc.range.y;
+    float d = clamp(far / (far - n) * (1.0 - n / max(z, n)), 0.0, 1.0);
     return min(mix(pc.range.w, pc.range2.x, d), pc.range2.y);
 }
 

@@ -41,7 +41,8 @@ public:
     DepthSwapchain& operator=(const DepthSwapchain&) = delete;
 
     // Acquire, wait, convert `depth` (depth.<eye>, GENERAL, rendered through `fov` at
-    // `scene_units_per_metre`; nearest sample when sizes differ) into the image, release.
+    // `scene_units_per_metre`; when sizes differ, the nearest hit among the render pixels the
+    // colour blit blends) into the image, release.
     void present(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
                  const DepthProjection& projection);
 

@@ -4,7 +4,10 @@
 // declared, is traced by the CPU twin (double precision). The depth must put the sky (maxDepth)
 // where the twin misses and decode, through the declared nearZ/farZ, to the twin's hit distance;
 // and where the depth says sky, the colour image must show the scene's background for that ray.
-//   fg_xr_depth_judge PACK DUMP_FOLDER
+//   fg_xr_depth_judge PACK DUMP_FOLDER [RENDER_SCALE]
+// RENDER_SCALE < 1: fgplay rendered smaller than the swapchain, so depth steps are 1 / RENDER_SCALE
+// coarser, and silhouettes 2 / RENDER_SCALE - 1 swapchain pixels wide (a render pixel, plus the
+// hits the depth takes from neighbours the colour blit blends in); the tolerances grow as much.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,10 +48,12 @@ double tonemap(double c) { return std::clamp((c * (2.51 * c + 0.03)) / (c * (2.4
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: fg_xr_depth_judge PACK DUMP_FOLDER\n");
+    if (argc != 3 && argc != 4) {
+        std::fprintf(stderr, "usage: fg_xr_depth_judge PACK DUMP_FOLDER [RENDER_SCALE]\n");
         return 2;
     }
+    const double coarser = argc == 4 ? 1.0 / std::clamp(std::atof(argv[3]), 0.1, 1.0) : 1.0;
+    const double silhouette = 2.0 * coarser - 1.0;
     const std::string folder = argv[2];
     fg::Diagnostics diag;
     auto pack = fg::read_pack_file(argv[1], diag);
@@ -150,16 +155,16 @@ int main(int argc, char** argv) {
             fmt::print("FAIL: the view must show both the fractal and the sky\n");
             ok = false;
         }
-        if (wrong > 2.0) {
-            fmt::print("FAIL: more than 2 % of the pixels are sky in one and a hit in the other\n");
+        if (wrong > 2.0 * silhouette) {
+            fmt::print("FAIL: more than {:g} % of the pixels are sky in one and a hit in the other\n", 2.0 * silhouette);
             ok = false;
         }
         // The march stops where the distance estimate falls under half a pixel cone, and a fractal's
         // estimate undershoots: hits land a cone radius or two short of the twin's surface, never
         // beyond it. Depth read as ray distance (not z), a wrong near/far or scale lands beyond it.
-        if (median > 3.0 || p95 > 12.0 || behind > 1.0) {
-            fmt::print("FAIL: decoded depths disagree with the CPU twin (median over 3 or p95 over 12 cone radii, or over 1 % "
-                       "of the hits beyond the surface)\n");
+        if (median > 3.0 * coarser || p95 > 12.0 * coarser || behind > 1.0) {
+            fmt::print("FAIL: decoded depths disagree with the CPU twin (median over {:g} or p95 over {:g} cone radii, or over 1 % "
+                       "of the hits beyond the surface)\n", 3.0 * coarser, 12.0 * coarser);
             ok = false;
         }
         if (colour > 1.0) {
