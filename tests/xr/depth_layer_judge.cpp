@@ -1,13 +1,14 @@
 // Judges the depth layer fgplay submitted to the test runtime (the last frame, dumped by
 // test_runtime/depth_layer_check.cpp) against the scene itself, with no code of fgplay's frame
 // graph in the loop: every visible pixel's ray, rebuilt from the pose and field of view the layer
-// declared, is traced by the CPU twin (double precision). The depth must put the sky (maxDepth)
+// declared, is traced by the CPU twin (double precision, stopping by the pack's own hit rule). The
+// depth must put the sky (maxDepth)
 // where the twin misses and decode, through the declared nearZ/farZ, to the twin's hit distance;
 // and where the depth says sky, the colour image must show the scene's background for that ray.
 //   fg_xr_depth_judge PACK DUMP_FOLDER [RENDER_SCALE]
-// RENDER_SCALE < 1: fgplay rendered smaller than the swapchain, so depth steps are 1 / RENDER_SCALE
-// coarser, and silhouettes 2 / RENDER_SCALE - 1 swapchain pixels wide (a render pixel, plus the
-// hits the depth takes from neighbours the colour blit blends in); the tolerances grow as much.
+// RENDER_SCALE < 1: fgplay rendered smaller than the swapchain, so the hit rule's cone is 1 /
+// RENDER_SCALE wider, and silhouettes 2 / RENDER_SCALE - 1 swapchain pixels wide (a render pixel,
+// plus the hits the depth takes from neighbours the colour blit blends in); the tolerances grow.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -70,8 +71,11 @@ int main(int argc, char** argv) {
     }
     const fg::SceneSettings& scene = ir->scene;
     const fg::HeadPose origin = fg::look_at(scene.camera.position, scene.camera.target, scene.camera.up);
+    // The twin stops by the frame graph's own hit rule (the pack's epsilon of the pixel cone), so
+    // that what is compared is where the surface is, not two different notions of "close enough".
     fg::ReferenceSettings rs;
     rs.step_scale = pack->manifest.find_spec("step_scale")->value;
+    rs.epsilon = pack->manifest.find_spec("epsilon")->value;
 
     std::ifstream meta_file(folder + "/xr_depth.json");
     if (!meta_file) {
@@ -110,7 +114,7 @@ int main(int argc, char** argv) {
                 if (std::min(u, 1.0 - u) + std::min(s, 1.0 - s) < 0.3 + 2.0 / w) continue;
                 const double tx = tl + (tr - tl) * u, ty = tu + (td - tu) * s;
                 const glm::dvec3 rd = origin.orientation * (q * glm::normalize(glm::dvec3(tx, ty, -1.0)));
-                const double t_twin = fg::reference_trace(*twin, scene, ro, rd, cone, rs);
+                const double t_twin = fg::reference_trace(*twin, scene, ro, rd, cone * coarser, rs);
                 const std::size_t i = static_cast<std::size_t>(y) * w + x;
                 const double d = depth[i];
                 const bool sky = depth[i] == static_cast<float>(hi);
@@ -149,22 +153,24 @@ int main(int argc, char** argv) {
                    "{:.2f} % beyond the surface; sky pixels not showing the background: {:.2f} %\n",
                    eye ? "right" : "left", w, h, m["format"].get<std::string>(), n, f, v.judged, 100.0 * v.sky / judged,
                    100.0 * (judged - v.twin_hits) / judged, wrong, median, p95, behind, colour);
-        // Silhouettes: the frame graph's hit rule (a pixel-cone epsilon, a step cap) and the twin's
-        // strict one differ on a few edge pixels; a mis-decoded or mis-placed depth fails by far.
+        // With the same hit rule the twin and the frame graph agree to a fraction of a cone radius;
+        // what is left is float against double, and a step cap on a few silhouette pixels. Each
+        // extra swapchain pixel of silhouette width (rendered smaller) costs up to 2 % of this view
+        // (the bulb's outline is about 130 pixels long in 7356), and a depth step of a coarser pixel.
+        const double allowed_wrong = 0.5 + 2.0 * (silhouette - 1.0);
+        const double allowed_median = 0.5 + 1.5 * (coarser - 1.0), allowed_p95 = 2.0 + 8.0 * (coarser - 1.0);
         if (v.twin_hits < v.judged / 20 || v.twin_hits > v.judged - v.judged / 20) {
             fmt::print("FAIL: the view must show both the fractal and the sky\n");
             ok = false;
         }
-        if (wrong > 2.0 * silhouette) {
-            fmt::print("FAIL: more than {:g} % of the pixels are sky in one and a hit in the other\n", 2.0 * silhouette);
+        if (wrong > allowed_wrong) {
+            fmt::print("FAIL: more than {:g} % of the pixels are sky in one and a hit in the other\n", allowed_wrong);
             ok = false;
         }
-        // The march stops where the distance estimate falls under half a pixel cone, and a fractal's
-        // estimate undershoots: hits land a cone radius or two short of the twin's surface, never
-        // beyond it. Depth read as ray distance (not z), a wrong near/far or scale lands beyond it.
-        if (median > 3.0 * coarser || p95 > 12.0 * coarser || behind > 1.0) {
+        // Depth read as ray distance (not z), a wrong near/far or scale lands beyond the twin's hit.
+        if (median > allowed_median || p95 > allowed_p95 || behind > 1.0) {
             fmt::print("FAIL: decoded depths disagree with the CPU twin (median over {:g} or p95 over {:g} cone radii, or over 1 % "
-                       "of the hits beyond the surface)\n", 3.0 * coarser, 12.0 * coarser);
+                       "of the hits more than a cone radius beyond the twin's)\n", allowed_median, allowed_p95);
             ok = false;
         }
         if (colour > 1.0) {
