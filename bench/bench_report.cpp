@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frame/trade_off_front.h"
+
 namespace fg::bench {
 
 std::string file_safe(std::string name) {
@@ -120,7 +122,17 @@ void BenchReport::write(const std::string& folder) const {
                              {"wrong_pct", r.misclassified_pct},
                              {"depth_p95", r.depth_p95},
                              {"psnr", r.psnr},
+                             {"size", r.size},
+                             {"settings", trade_off_settings_json(r.frame, size)},
                              {"error", r.error}});
+    // The Pareto front over all views, cheapest first: what `fgplay xr --trade-offs` walks.
+    j["trade_offs"] = nlohmann::json::array();
+    try {
+        for (const auto& t : trade_offs_from_bench_json(j))
+            j["trade_offs"].push_back({{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", t.wrong_pct}});
+    } catch (const TradeOffError& e) {
+        fmt::print("note: no trade-off front: {}\n", e.what());
+    }
     std::ofstream(fs::path(folder) / "results.json") << j.dump(1);
 }
 

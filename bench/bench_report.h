@@ -6,12 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "frame/frame_settings.h"
+
 namespace fg::bench {
 
 struct BenchRow {
     std::string view, setting, group, stereo;
     bool baseline = false;
     std::uint32_t size = 0;
+    FrameSettings frame;                     // what was rendered: results.json carries it for the frame governor
     std::map<std::string, double> pass_ms;   // per timer group and "frame"; median of the timed frames
     double evaluations_per_pixel = 0.0;
     bool comparable = true;

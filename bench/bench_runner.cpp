@@ -213,6 +213,7 @@ int run_bench(const BenchOptions& o) {
             row.baseline = s.baseline;
             row.stereo = stereo_mode_name(s.frame.stereo);
             row.size = s.frame.width;
+            row.frame = s.frame;
             row.reference_cpu_checked = ref.cpu_checked;
             row.reference_cpu_disagree = ref.cpu_disagree;
             try {

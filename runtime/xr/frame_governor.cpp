@@ -7,7 +7,10 @@
 namespace fg::xr {
 
 std::string GovernorLevel::describe() const {
-    std::string s = fmt::format("scale {:.2f}, foveation {}", render_scale, foveation > 0.0 ? fmt::format("{:.2f}", foveation) : foveation < 0.0 ? "as the scene says" : "off");
+    std::string s = name.empty() ? "" : fmt::format("\"{}\": ", name);
+    if (stereo) s += fmt::format("{}, ", stereo_mode_name(*stereo));
+    if (cone_levels) s += fmt::format("{} cone levels, ", *cone_levels);
+    s += fmt::format("scale {:.2f}, foveation {}", render_scale, foveation > 0.0 ? fmt::format("{:.2f}", foveation) : foveation < 0.0 ? "as the scene says" : "off");
     for (const auto& [k, v] : knobs) s += fmt::format(", {} {}", k, v);
     return s;
 }

@@ -9,9 +9,11 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "frame/frame_settings.h"
 #include "pack/manifest.h"
 
 namespace fg::xr {
@@ -20,6 +22,11 @@ struct GovernorLevel {
     double render_scale = 1.0;           // of the per-eye render size
     double foveation = -1.0;             // fovea radius in half image heights, 0 = off, < 0 = as the scene says
     std::map<std::string, double> knobs; // absolute knob values for this pack
+    // Set by a measured ladder (trade_off_ladder.h): the benchmark's name for the setting, and its
+    // stereo mode and conemarch levels; unset, the player's own are kept.
+    std::string name;
+    std::optional<StereoMode> stereo;
+    std::optional<std::uint32_t> cone_levels;
     std::string describe() const;
 };
 

@@ -17,6 +17,9 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
                         "Vulkan validation layer on; its errors and OpenXR validation errors fail the run");
     c.command->add_flag_function("--no-governor", [&c](std::int64_t) { c.options.governor = false; },
                         "keep the settings fixed instead of holding the frame budget");
+    c.command->add_option("--trade-offs", c.options.trade_offs,
+                          "results.json of `fgplay bench` for this graph: the governor walks its measured Pareto front")
+        ->check(CLI::ExistingFile);
     c.command->add_option("--budget-ms", c.options.budget_ms, "GPU time per frame to hold (default: the display period)");
     c.command->add_option("--fly", c.options.fly, "fly where you look at this throttle (1 = normal speed)");
     c.command->add_option("--controller-speed", c.options.controller_speed,

@@ -33,6 +33,7 @@ public:
     const std::string& runtime_name() const { return runtime_name_; }
     const std::string& system_name() const { return system_name_; }
     bool has_visibility_mask() const { return visibility_mask_; }
+    bool has_depth_layer() const { return depth_layer_; }   // XR_KHR_composition_layer_depth
     const XrMessageLog& messages() const { return *log_; }
 
     // An extension function; throws when the runtime does not provide it.
@@ -49,6 +50,7 @@ private:
     XrSystemId system_ = XR_NULL_SYSTEM_ID;
     std::string runtime_name_, system_name_;
     bool visibility_mask_ = false;
+    bool depth_layer_ = false;
     std::unique_ptr<XrMessageLog> log_ = std::make_unique<XrMessageLog>();
 };
 

@@ -20,8 +20,10 @@
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
 #include "xr/controller_actions.h"
+#include "xr/depth_layer.h"
 #include "xr/eye_swapchain.h"
 #include "xr/frame_governor.h"
+#include "xr/trade_off_ladder.h"
 #include "xr/visibility_mask.h"
 #include "xr/session_lifecycle.h"
 #include "xr/vulkan_binding.h"
@@ -39,6 +41,7 @@ struct PlayStats {
     int frames = 0;
     int dark_frames = 0;   // black at the middle of a snap turn: nothing rendered, no layer
     double gpu_ms_sum = 0.0;
+    double depth_ms_sum = 0.0;   // wall time of both eyes' depth layer: conversion pass, copy, wait
     std::map<std::string, double> pass_ms_sum;
 };
 
@@ -87,14 +90,16 @@ public:
         for (int eye = 0; eye < 2; ++eye)
             swapchains_[eye] = std::make_unique<EyeSwapchain>(session_, format_, views[eye].recommendedImageRectWidth,
                                                               views[eye].recommendedImageRectHeight);
+        make_depth_swapchains(formats, views[0].recommendedImageRectWidth, views[0].recommendedImageRectHeight);
         base_width_ = o.width ? o.width : views[0].recommendedImageRectWidth;
         base_height_ = o.height ? o.height : views[0].recommendedImageRectHeight;
         frame_.width = base_width_;
         frame_.height = base_height_;
-        governor_ = std::make_unique<FrameGovernor>(governor_ladder(pack.manifest));
+        governor_ = std::make_unique<FrameGovernor>(o.ladder.empty() ? governor_ladder(pack.manifest) : o.ladder);
         frame_.stereo = o.stereo;
         frame_.cone_levels = o.cone_levels;
         frame_.knobs = o.knobs;
+        if (o.governor) apply(governor_->current());
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         stereo_.world_scale = scene_.world_scale;
@@ -107,6 +112,7 @@ public:
         executor_.reset();
         for (auto& s : swapchains_) s.reset();
         actions_.reset();
+        for (auto& s : depth_) s.reset();
         if (space_) xrDestroySpace(space_);
         if (session_) xrDestroySession(session_);
     }
@@ -143,6 +149,7 @@ public:
     const LensEllipse& lens(int eye) const { return lenses_[eye]; }
     const CollisionWitness* witness() const { return witness_.get(); }
     const FrameGovernor& governor() const { return *governor_; }
+    bool has_depth_layer() const { return depth_[0] != nullptr; }
 
     // What the controls did over the session, for the log.
     std::string locomotion_summary() const {
@@ -326,6 +333,17 @@ private:
         if (options_.governor) govern(fs, period_ns);
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
+        const View* rendered[2] = {&sv.left, &sv.right};
+        const auto depth_start = std::chrono::steady_clock::now();
+        // Metres follow the viewer's current scale; the far plane stays the march's far limit.
+        depth_projection_.far_m = static_cast<float>(scene_.max_distance / stereo_.world_scale);
+        for (int eye = 0; eye < 2 && depth_[eye]; ++eye) {
+            depth_[eye]->present(ctx_, executor_->image(eye ? "depth.right" : "depth.left"), rendered[eye]->fov, stereo_.world_scale,
+                                 depth_projection_);
+            depth_[eye]->describe(depth_info_[eye], depth_projection_);
+            projection[eye].next = &depth_info_[eye];
+        }
+        if (depth_[0]) stats_.depth_ms_sum += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - depth_start).count();
         for (int eye = 0; eye < 2; ++eye) {
             projection[eye].pose = views[eye].pose;
             projection[eye].fov = views[eye].fov;
@@ -353,15 +371,40 @@ private:
             std::fflush(stdout);
         }
         if (!changed) return;
-        const GovernorLevel& level = governor_->current();
-        frame_.width = std::max(8u, static_cast<std::uint32_t>(std::lround(base_width_ * level.render_scale)));
-        frame_.height = std::max(8u, static_cast<std::uint32_t>(std::lround(base_height_ * level.render_scale)));
-        frame_.foveation = level.foveation;
-        frame_.knobs = options_.knobs;
-        for (const auto& [k, v] : level.knobs) frame_.knobs[k] = v;
+        apply(governor_->current());
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         rebuild_ = true;
+    }
+
+    void apply(const GovernorLevel& level) {
+        frame_.width = std::max(8u, static_cast<std::uint32_t>(std::lround(base_width_ * level.render_scale)));
+        frame_.height = std::max(8u, static_cast<std::uint32_t>(std::lround(base_height_ * level.render_scale)));
+        frame_.foveation = level.foveation;
+        frame_.stereo = level.stereo.value_or(options_.stereo);
+        frame_.cone_levels = level.cone_levels.value_or(options_.cone_levels);
+        frame_.knobs = options_.knobs;
+        for (const auto& [k, v] : level.knobs) frame_.knobs[k] = v;
+    }
+
+    // XR_KHR_composition_layer_depth where the runtime has it, in a depth format it lists.
+    void make_depth_swapchains(const std::vector<std::int64_t>& formats, std::uint32_t width, std::uint32_t height) {
+        if (!instance_.has_depth_layer()) {
+            fmt::print("depth layer: the runtime has no XR_KHR_composition_layer_depth; no depth is submitted\n");
+            return;
+        }
+        auto format = choose_depth_format(formats);
+        if (!format) {
+            fmt::print("depth layer: the runtime lists no D32_SFLOAT or D16_UNORM swapchain format; no depth is submitted\n");
+            return;
+        }
+        // The projection's far plane is the march's far limit: every hit is nearer, the sky is there.
+        depth_projection_.far_m = static_cast<float>(scene_.max_distance / scene_.world_scale);
+        depth_projection_.near_m = std::min(0.05f, 0.01f * depth_projection_.far_m);
+        for (int eye = 0; eye < 2; ++eye) depth_[eye] = std::make_unique<DepthSwapchain>(ctx_, session_, *format, width, height);
+        fmt::print("depth layer: XR_KHR_composition_layer_depth, {} {}x{} per eye, near {:g} m, far {:g} m\n",
+                   *format == VK_FORMAT_D32_SFLOAT ? "D32_SFLOAT" : "D16_UNORM", width, height, depth_projection_.near_m,
+                   depth_projection_.far_m);
     }
 
     void update_lens_masks(const StereoViews& sv) {
@@ -401,6 +444,9 @@ private:
     XrSpace space_ = XR_NULL_HANDLE;
     std::int64_t format_ = 0;
     std::unique_ptr<EyeSwapchain> swapchains_[2];
+    std::unique_ptr<DepthSwapchain> depth_[2];
+    XrCompositionLayerDepthInfoKHR depth_info_[2] = {{XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR}, {XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR}};
+    DepthProjection depth_projection_;
     FrameSettings frame_;
     StereoSettings stereo_;
     std::unique_ptr<FrameExecutor> executor_;
@@ -438,6 +484,20 @@ int play_xr(const XrPlayOptions& o) {
         fmt::print(stderr, "{}", diag.format(o.pack));
         return 1;
     }
+    XrPlayOptions options = o;
+    if (o.governor && !o.trade_offs.empty()) {
+        try {
+            auto front = read_trade_offs(o.trade_offs);
+            options.ladder = trade_off_ladder(pack->manifest, front);
+            fmt::print("governor: {} levels from the Pareto front measured in {}:\n{}\n", options.ladder.size(), o.trade_offs,
+                       describe_trade_off_ladder(front));
+        } catch (const TradeOffError& e) {
+            fmt::print(stderr, "fgplay xr: --trade-offs {}\n", e.what());
+            return 1;
+        }
+    } else if (o.governor) {
+        fmt::print("governor: the fixed ladder (no --trade-offs)\n");
+    }
     try {
         OpenXrInstance instance;
         fmt::print("OpenXR runtime: {}, system: {}\n", instance.runtime_name(), instance.system_name());
@@ -452,7 +512,7 @@ int play_xr(const XrPlayOptions& o) {
             vk::Context ctx(co);
             fmt::print("Vulkan device: {}\n", ctx.device_name());
             {
-                XrPlayer player(instance, ctx, *pack, o);
+                XrPlayer player(instance, ctx, *pack, options);
                 rc = player.run();
                 const auto& s = player.stats();
                 const auto& f = player.frame_settings();
@@ -464,6 +524,9 @@ int play_xr(const XrPlayOptions& o) {
                     for (const auto& [pass, ms] : s.pass_ms_sum) passes += fmt::format(" {} {:.2f} ms,", pass, ms / s.frames);
                     fmt::print("mean GPU time per frame:{}\n", passes.substr(0, passes.size() - 1));
                 }
+                if (player.has_depth_layer() && s.frames > 0)
+                    fmt::print("depth layer: {} frames, {:.2f} ms per frame for both eyes (conversion pass, copy, wait)\n", s.frames,
+                               s.depth_ms_sum / s.frames);
                 fmt::print("session states: {}\n", fmt::join(player.lifecycle().history(), " -> "));
                 fmt::print("{}", player.locomotion_summary());
                 if (player.witness()) fmt::print("{}\n", player.witness()->summary());

@@ -6,8 +6,10 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "frame/frame_settings.h"
+#include "xr/frame_governor.h"
 
 namespace fg::xr {
 
@@ -22,6 +24,8 @@ struct XrPlayOptions {
     std::map<std::string, double> knobs;
     bool governor = true;                // hold the frame budget by moving along the accuracy ladder
     double budget_ms = 0.0;              // 0 = the display period the runtime predicts
+    std::string trade_offs;              // results.json of `fgplay bench`: the governor walks its Pareto front
+    std::vector<GovernorLevel> ladder;   // read from trade_offs by play_xr; empty: the fixed ladder
     double fly = 0.0;                    // gaze-directed flight at this throttle (1 = normal speed)
     bool check_collisions = false;       // watch the head with the CPU twin and report
     bool controllers = true;             // controller input through OpenXR actions

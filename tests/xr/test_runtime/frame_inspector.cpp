@@ -135,7 +135,7 @@ void FrameInspector::ensure_buffer(VkDeviceSize size) {
 }
 
 void FrameInspector::submit(const std::vector<VkImageMemoryBarrier>& before, VkImage copy_from, std::uint32_t width,
-                            std::uint32_t height, const std::vector<VkImageMemoryBarrier>& after) {
+                            std::uint32_t height, const std::vector<VkImageMemoryBarrier>& after, VkImageAspectFlags aspect) {
     vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -144,7 +144,7 @@ void FrameInspector::submit(const std::vector<VkImageMemoryBarrier>& before, VkI
                          static_cast<std::uint32_t>(before.size()), before.data());
     if (copy_from) {
         VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageSubresource = {aspect, 0, 0, 1};
         region.imageExtent = {width, height, 1};
         vkCmdCopyImageToBuffer(cmd_, copy_from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer_, 1, &region);
         VkBufferMemoryBarrier host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
@@ -158,7 +158,10 @@ void FrameInspector::submit(const std::vector<VkImageMemoryBarrier>& before, VkI
                              nullptr);
     }
     if (!after.empty())
-        vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0,
+        vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             aspect == VK_IMAGE_ASPECT_DEPTH_BIT ? VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT
+                                                                 : VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                             0, 0,
                              nullptr, 0, nullptr, static_cast<std::uint32_t>(after.size()), after.data());
     vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
     VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -190,6 +193,42 @@ EyeImage FrameInspector::read(VkImage image, VkFormat format, std::uint32_t widt
                            VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT)});
     out.rgba.resize(size);
     std::memcpy(out.rgba.data(), mapped_, size);
+    return out;
+}
+
+namespace {
+
+VkImageMemoryBarrier depth_barrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src, VkAccessFlags dst) {
+    VkImageMemoryBarrier b = layout_barrier(image, from, to, src, dst);
+    b.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    return b;
+}
+
+}  // namespace
+
+void FrameInspector::prepare_depth(VkImage image) {
+    submit({depth_barrier(image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, 0, 0)},
+           VK_NULL_HANDLE, 0, 0, {});
+}
+
+std::vector<float> FrameInspector::read_depth(VkImage image, VkFormat format, std::uint32_t width, std::uint32_t height) {
+    const bool d16 = format == VK_FORMAT_D16_UNORM;
+    const std::size_t n = static_cast<std::size_t>(width) * height;
+    ensure_buffer(n * (d16 ? 2 : 4));
+    const VkAccessFlags app_writes = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    submit({depth_barrier(image, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, app_writes,
+                          VK_ACCESS_TRANSFER_READ_BIT)},
+           image, width, height,
+           {depth_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                          VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)},
+           VK_IMAGE_ASPECT_DEPTH_BIT);
+    std::vector<float> out(n);
+    if (d16) {
+        const auto* p = static_cast<const std::uint16_t*>(mapped_);
+        for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<float>(p[i]) / 65535.0f;
+    } else {
+        std::memcpy(out.data(), mapped_, n * 4);
+    }
     return out;
 }
 

@@ -37,10 +37,15 @@ public:
     void prepare(VkImage image);
     // Copies an image in COLOR_ATTACHMENT_OPTIMAL (and leaves it there); waits for the copy.
     EyeImage read(VkImage image, VkFormat format, std::uint32_t width, std::uint32_t height);
+    // The same for depth swapchain images (D32_SFLOAT or D16_UNORM, DEPTH_STENCIL_ATTACHMENT_OPTIMAL):
+    // the depth values as floats in [0, 1].
+    void prepare_depth(VkImage image);
+    std::vector<float> read_depth(VkImage image, VkFormat format, std::uint32_t width, std::uint32_t height);
 
 private:
     void submit(const std::vector<VkImageMemoryBarrier>& before, VkImage copy_from, std::uint32_t width,
-                std::uint32_t height, const std::vector<VkImageMemoryBarrier>& after);
+                std::uint32_t height, const std::vector<VkImageMemoryBarrier>& after,
+                VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
     void ensure_buffer(VkDeviceSize size);
 
     VkPhysicalDevice physical_;

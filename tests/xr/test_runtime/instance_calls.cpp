@@ -19,7 +19,14 @@ struct ExtensionSpec {
     const char* name;
     std::uint32_t version;
 };
-constexpr ExtensionSpec kExtensions[] = {{XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME, 2}, {XR_KHR_VISIBILITY_MASK_EXTENSION_NAME, 2}};
+constexpr ExtensionSpec kExtensions[] = {{XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME, 2}, {XR_KHR_VISIBILITY_MASK_EXTENSION_NAME, 2},
+                                         {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION}};
+
+// FG_XR_TEST_NO_DEPTH_LAYER=1: a runtime without XR_KHR_composition_layer_depth.
+std::size_t offered_extensions() {
+    const char* off = std::getenv("FG_XR_TEST_NO_DEPTH_LAYER");
+    return std::size(kExtensions) - (off && *off == '1' ? 1 : 0);
+}
 
 template <typename T, typename Fill>
 XrResult two_call(std::uint32_t capacity, std::uint32_t* count, T* out, std::size_t size, Fill fill) {
@@ -34,7 +41,7 @@ XrResult two_call(std::uint32_t capacity, std::uint32_t* count, T* out, std::siz
 XRAPI_ATTR XrResult XRAPI_CALL EnumerateInstanceExtensionProperties(const char* layer, std::uint32_t capacity,
                                                                     std::uint32_t* count, XrExtensionProperties* props) {
     if (layer && *layer) return XR_ERROR_API_LAYER_NOT_PRESENT;
-    return two_call(capacity, count, props, std::size(kExtensions), [](XrExtensionProperties& p, std::size_t i) {
+    return two_call(capacity, count, props, offered_extensions(), [](XrExtensionProperties& p, std::size_t i) {
         std::strncpy(p.extensionName, kExtensions[i].name, XR_MAX_EXTENSION_NAME_SIZE - 1);
         p.extensionVersion = kExtensions[i].version;
     });
@@ -48,6 +55,8 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
         std::string name = info->enabledExtensionNames[i];
         if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) inst->vulkan2 = true;
         else if (name == XR_KHR_VISIBILITY_MASK_EXTENSION_NAME) inst->visibility_mask = true;
+        else if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME && offered_extensions() == std::size(kExtensions))
+            inst->depth_layer = true;
         else if (name == XR_EXT_DEBUG_UTILS_EXTENSION_NAME) continue;   // the loader implements it
         else return XR_ERROR_EXTENSION_NOT_PRESENT;
     }

@@ -84,7 +84,7 @@ struct Space {
 };
 
 struct Instance {
-    bool vulkan2 = false, visibility_mask = false;
+    bool vulkan2 = false, visibility_mask = false, depth_layer = false;
     bool requirements_queried = false;
     std::deque<XrEventDataBuffer> events;
     std::vector<std::unique_ptr<Session>> sessions;

@@ -39,6 +39,10 @@ void RuntimeReport::write() const {
     j["actions_synced"] = actions_synced;
     if (reference_compared)
         j["reference"] = {{"differ_fraction", reference_differ_fraction}, {"max_diff", reference_max_diff}};
+    j["depth_layer"] = {{"frames_with_depth", frames_with_depth},
+                        {"format", depth_format},
+                        {"sky_fraction_left", sky_fraction[0]},
+                        {"sky_fraction_right", sky_fraction[1]}};
     std::ofstream(path) << j.dump(2) << "\n";
 }
 

@@ -25,6 +25,9 @@ struct RuntimeReport {
     bool reference_compared = false;
     double reference_differ_fraction = 1.0;   // pixels with a channel more than 2 levels off
     int reference_max_diff = 255;
+    int frames_with_depth = 0;                             // XR_KHR_composition_layer_depth on both views
+    std::string depth_format;
+    double sky_fraction[2] = {0.0, 0.0};                   // of the last frame's depth: pixels at maxDepth
 
     void fail(int frame, const std::string& what);
     void write() const;   // to $FG_XR_TEST_REPORT, if set

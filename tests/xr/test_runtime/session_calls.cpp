@@ -6,6 +6,7 @@
 #include <cstring>
 #include <string>
 
+#include "depth_layer_check.h"
 #include "runtime_objects.h"
 
 namespace fgxrt {
@@ -23,6 +24,13 @@ const char* format_name(VkFormat f) {
         case VK_FORMAT_B8G8R8A8_UNORM: return "B8G8R8A8_UNORM";
         default: return "unexpected format";
     }
+}
+
+// Depth formats for XR_KHR_composition_layer_depth; FG_XR_TEST_DEPTH_FORMAT=D16_UNORM offers only that one.
+std::vector<VkFormat> depth_formats() {
+    const char* only = std::getenv("FG_XR_TEST_DEPTH_FORMAT");
+    if (only && std::string(only) == "D16_UNORM") return {VK_FORMAT_D16_UNORM};
+    return {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM};
 }
 
 template <typename T, typename Fill>
@@ -178,7 +186,9 @@ XRAPI_ATTR XrResult XRAPI_CALL DestroySpace(XrSpace handle) {
 XRAPI_ATTR XrResult XRAPI_CALL EnumerateSwapchainFormats(XrSession handle, std::uint32_t capacity, std::uint32_t* count,
                                                          std::int64_t* formats) {
     if (!session(handle)) return XR_ERROR_HANDLE_INVALID;
-    return two_call(capacity, count, formats, std::size(kFormats), [](std::int64_t& f, std::size_t i) { f = kFormats[i]; });
+    std::vector<VkFormat> all(std::begin(kFormats), std::end(kFormats));
+    for (VkFormat f : depth_formats()) all.push_back(f);
+    return two_call(capacity, count, formats, all.size(), [&](std::int64_t& f, std::size_t i) { f = all[i]; });
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL CreateSwapchain(XrSession handle, const XrSwapchainCreateInfo* info, XrSwapchain* out) {
@@ -186,7 +196,10 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSwapchain(XrSession handle, const XrSwapcha
     if (!s) return XR_ERROR_HANDLE_INVALID;
     bool known = false;
     for (VkFormat f : kFormats) known = known || f == info->format;
+    const bool depth = is_depth_format(static_cast<VkFormat>(info->format));
+    for (VkFormat f : depth_formats()) known = known || f == info->format;
     if (!known) return XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED;
+    if (depth != ((info->usageFlags & XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0)) return XR_ERROR_VALIDATION_FAILURE;
     if (info->width == 0 || info->height == 0 || info->width > 4096 || info->height > 4096 || info->faceCount != 1 ||
         info->arraySize != 1 || info->mipCount != 1 || info->sampleCount != 1)
         return XR_ERROR_VALIDATION_FAILURE;
@@ -196,7 +209,8 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSwapchain(XrSession handle, const XrSwapcha
     sc->width = info->width;
     sc->height = info->height;
     // The compositor reads the images, so they are always transfer sources.
-    VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                              (depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
     if (info->usageFlags & XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT) usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (info->usageFlags & XR_SWAPCHAIN_USAGE_SAMPLED_BIT) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
     if (info->usageFlags & XR_SWAPCHAIN_USAGE_UNORDERED_ACCESS_BIT) usage |= VK_IMAGE_USAGE_STORAGE_BIT;
@@ -231,9 +245,10 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSwapchain(XrSession handle, const XrSwapcha
         if (vkAllocateMemory(s->device, &mi, nullptr, &memory) != VK_SUCCESS) return XR_ERROR_RUNTIME_FAILURE;
         sc->memory.push_back(memory);
         vkBindImageMemory(s->device, image, memory, 0);
-        s->inspector->prepare(image);
+        if (depth) s->inspector->prepare_depth(image);
+        else s->inspector->prepare(image);
     }
-    live_instance()->report.swapchains.push_back(std::string(format_name(sc->format)) + " " + std::to_string(sc->width) +
+    live_instance()->report.swapchains.push_back(std::string(depth ? depth_format_name(sc->format) : format_name(sc->format)) + " " + std::to_string(sc->width) +
                                                  "x" + std::to_string(sc->height));
     *out = reinterpret_cast<XrSwapchain>(sc.get());
     s->swapchains.push_back(std::move(sc));
@@ -390,6 +405,7 @@ void inspect(Session& s, const XrFrameEndInfo& info) {
             return fail(e.what());
         }
     }
+    check_depth_layer(s, *projection, frame, fail);
     FrameVerdict verdict = judge_stereo_pair(eyes[0], eyes[1]);
     for (const auto& p : verdict.problems) fail(p);
     report.mean_luma_left = verdict.mean_luma[0];

@@ -1,0 +1,42 @@
+#include "xr/trade_off_ladder.h"
+
+#include <fmt/format.h>
+
+namespace fg::xr {
+
+std::vector<GovernorLevel> trade_off_ladder(const PackManifest& manifest, const std::vector<TradeOff>& front) {
+    std::vector<GovernorLevel> ladder;
+    for (auto it = front.rbegin(); it != front.rend(); ++it) {
+        GovernorLevel level;
+        level.name = it->setting;
+        level.render_scale = it->render_scale;
+        level.foveation = it->frame.foveation;
+        level.stereo = it->frame.stereo;
+        level.cone_levels = it->frame.cone_levels;
+        for (const auto& [k, v] : it->frame.knobs) {
+            const auto* spec = manifest.find_spec(k);
+            if (!spec)
+                throw TradeOffError(fmt::format("setting \"{}\"", it->setting),
+                                    fmt::format("'{}' is not a knob of the pack '{}' (was the benchmark run on another graph?)",
+                                                k, manifest.name));
+            if ((spec->min && v < *spec->min) || (spec->max && v > *spec->max))
+                throw TradeOffError(fmt::format("setting \"{}\"", it->setting),
+                                    fmt::format("{} = {:g} is outside the knob's range in the pack '{}'", k, v, manifest.name));
+            level.knobs[k] = v;
+        }
+        ladder.push_back(std::move(level));
+    }
+    return ladder;
+}
+
+std::string describe_trade_off_ladder(const std::vector<TradeOff>& front) {
+    std::string s;
+    for (std::size_t i = 0; i < front.size(); ++i) {
+        const TradeOff& t = front[front.size() - 1 - i];
+        s += fmt::format("{}  level {}: \"{}\", {:.1f} ms, {:.3f} % misclassified", i ? "\n" : "", i, t.setting, t.time_ms,
+                         t.wrong_pct);
+    }
+    return s;
+}
+
+}  // namespace fg::xr
