@@ -26,8 +26,12 @@ std::vector<glm::dvec3> Locomotion::probe_points(const glm::dvec3& head, const g
 
 void Locomotion::on_probe(const ProbeResult& result) {
     samples_.clear();
-    for (const auto& s : result.samples)
-        if (std::isfinite(s.distance) && s.distance > 0.0) samples_.push_back(s);
+    answers_.clear();
+    for (const auto& s : result.samples) {
+        if (!std::isfinite(s.distance)) continue;
+        answers_.push_back(s);
+        if (s.distance > 0.0) samples_.push_back(s);
+    }
 }
 
 double Locomotion::guaranteed_clearance(const glm::dvec3& p) const {

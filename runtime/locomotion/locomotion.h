@@ -46,18 +46,22 @@ public:
     double guaranteed_clearance(const glm::dvec3& p) const;
     const glm::dvec3& velocity() const { return velocity_; }
     bool has_probe() const { return !samples_.empty(); }
+    // Every finite answer of the newest probe, the head inside the surface (d <= 0) included.
+    const std::vector<ProbeSample>& answers() const { return answers_; }
     // Speed and head radius follow the world scale as it changes (world_scale.h).
     void set_world_scale(double world_scale) { world_scale_ = world_scale; }
     double head_radius_m() const { return settings_.head_radius; }
     // The scene moved by `delta` under the head (a looping scene wrapped): the answers move with it.
     void translate(const glm::dvec3& delta) {
         for (auto& s : samples_) s.point += delta;
+        for (auto& s : answers_) s.point += delta;
     }
 
 private:
     LocomotionSettings settings_;
     double world_scale_ = 1.0;
-    std::vector<ProbeSample> samples_;
+    std::vector<ProbeSample> samples_;   // the empty balls (d > 0) that bound each step
+    std::vector<ProbeSample> answers_;
     glm::dvec3 velocity_{0.0};
 };
 

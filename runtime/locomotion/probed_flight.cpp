@@ -5,7 +5,8 @@ namespace fg {
 ProbedFlight::ProbedFlight(const vk::Context& ctx, const Pack& pack, const LocomotionSettings& settings, double world_scale)
     : probe_(ctx, pack), locomotion_(settings, world_scale) {}
 
-glm::dvec3 ProbedFlight::update(const glm::dvec3& head, const glm::dvec3& direction, double throttle, double dt) {
+glm::dvec3 ProbedFlight::update(const glm::dvec3& head, const glm::dvec3& direction, double throttle, double dt,
+                                const glm::dvec3& tracked_velocity) {
     if (auto answer = probe_.poll()) {
         for (const auto& [upto, delta] : pending_)
             if (answer->ticket <= upto)
@@ -15,7 +16,7 @@ glm::dvec3 ProbedFlight::update(const glm::dvec3& head, const glm::dvec3& direct
         ++answers_;
     }
     glm::dvec3 next = locomotion_.step(head, direction, throttle, dt);
-    if (std::uint64_t ticket = probe_.submit(locomotion_.probe_points(next, locomotion_.velocity()))) last_ticket_ = ticket;
+    if (std::uint64_t ticket = probe_.submit(locomotion_.probe_points(next, locomotion_.velocity() + tracked_velocity))) last_ticket_ = ticket;
     return next;
 }
 

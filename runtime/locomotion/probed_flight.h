@@ -15,8 +15,11 @@ class ProbedFlight {
 public:
     ProbedFlight(const vk::Context& ctx, const Pack& pack, const LocomotionSettings& settings, double world_scale);
 
-    // Returns the new head position (scene units).
-    glm::dvec3 update(const glm::dvec3& head, const glm::dvec3& direction, double throttle, double dt);
+    // Returns the new head position (scene units). `tracked_velocity`: how fast the tracked head
+    // itself moves (scene units per second); the look-ahead probe adds it to the flight's, so a
+    // head walking into the surface is answered for by the time it gets there.
+    glm::dvec3 update(const glm::dvec3& head, const glm::dvec3& direction, double throttle, double dt,
+                      const glm::dvec3& tracked_velocity = glm::dvec3(0.0));
 
     const Locomotion& locomotion() const { return locomotion_; }
     void set_world_scale(double world_scale) { locomotion_.set_world_scale(world_scale); }

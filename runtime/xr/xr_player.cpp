@@ -20,6 +20,7 @@
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
 #include "xr/controller_actions.h"
+#include "locomotion/head_in_surface_fade.h"
 #include "xr/depth_layer.h"
 #include "xr/eye_swapchain.h"
 #include "xr/frame_governor.h"
@@ -39,7 +40,10 @@ glm::dquat to_glm(const XrQuaternionf& q) { return glm::dquat(q.w, q.x, q.y, q.z
 
 struct PlayStats {
     int frames = 0;
-    int dark_frames = 0;   // black at the middle of a snap turn: nothing rendered, no layer
+    int dark_frames = 0;   // black (a snap turn's middle, the head in the surface): nothing rendered, no layer
+    int inside_frames = 0;     // faded because the tracked head is at or in the surface
+    int inside_black_frames = 0;   // of those, black: no layer, as at a snap turn's middle
+    double darkest_inside = 1.0;
     double gpu_ms_sum = 0.0;
     double depth_ms_sum = 0.0;   // wall time of both eyes' depth layer: conversion pass, copy, wait
     std::map<std::string, double> pass_ms_sum;
@@ -153,7 +157,9 @@ public:
 
     // What the controls did over the session, for the log.
     std::string locomotion_summary() const {
-        std::string out = fmt::format("snap turns: {} ({} frames black)\n", snap_.turns(), stats_.dark_frames);
+        std::string out = fmt::format("snap turns: {} ({} frames black)\n", snap_.turns(), stats_.dark_frames - stats_.inside_black_frames);
+        out += fmt::format("head in the surface: {} frames faded (darkest {:.2f}), {} black\n", stats_.inside_frames,
+                           stats_.darkest_inside, stats_.inside_black_frames);
         out += fmt::format("world scale: {:.4g} -> {:.4g} (eye separation {:.4g} -> {:.4g} scene units), largest change per "
                            "frame {:.2f} %{}\n",
                            scale_first_, play_.world_scale(), ipd_first_, ipd_last_, 100.0 * scale_step_max_,
@@ -267,7 +273,13 @@ private:
             throttle = input.fly * options_.controller_speed;
             if (input.aim_valid) direction = play_.direction(input.aim_orientation * glm::dvec3(0.0, 0.0, -1.0));
         }
-        glm::dvec3 moved = flight_->update(head.position, direction, throttle, dt);
+        // The tracked head's own motion in the scene (not flight, turns or scaling, which move the
+        // play space): the look-ahead probe leads it.
+        const glm::dvec3 tracked_velocity =
+            dt > 0.0 && have_tracked_ ? play_.direction(tracked_head - last_tracked_head_) * play_.world_scale() / dt : glm::dvec3(0.0);
+        last_tracked_head_ = tracked_head;
+        have_tracked_ = true;
+        glm::dvec3 moved = flight_->update(head.position, direction, throttle, dt, tracked_velocity);
         play_.move(moved - head.position);
         flown_ += moved - head.position;
         head.position = moved;
@@ -290,9 +302,18 @@ private:
             scale_first_ = before;
         }
         ipd_last_ = ipd_m * play_.world_scale();
+        // A head walked or leant into the surface (flight never takes it there) sees black.
+        const double inside = head_in_surface_brightness(flight_->locomotion().answers(), head.position,
+                                                         flight_->locomotion().head_radius_m() * play_.world_scale());
+        if (inside < 1.0) {
+            ++stats_.inside_frames;
+            stats_.darkest_inside = std::min(stats_.darkest_inside, inside);
+        }
+        const double brightness = std::min(turn.brightness, inside);
         // Black at the middle of a snap turn: the compositor shows black without a layer.
-        if (turn.brightness <= 0.0) {
+        if (turn.brightness <= 0.0 || inside <= 0.0) {
             ++stats_.dark_frames;
+            if (turn.brightness > 0.0) ++stats_.inside_black_frames;
             return false;
         }
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
@@ -320,13 +341,13 @@ private:
         executor_->set_frame(gpu);
         // Flight (not the tracked head) drives the comfort vignette, where the scene has one; a snap
         // turn fades the image (misc2.y) on its way to and from black.
-        if (scene_gpu_.misc[2] > 0.0f || turn.brightness < 1.0 || faded_) {
+        if (scene_gpu_.misc[2] > 0.0f || brightness < 1.0 || faded_) {
             GpuScene sc = scene_gpu_;
             if (scene_gpu_.misc[2] > 0.0f)
                 sc.misc[2] = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / play_.world_scale(),
                                                                  0.0, scene_gpu_.misc[2]));
-            sc.misc2[1] = static_cast<float>(1.0 - turn.brightness);
-            faded_ = turn.brightness < 1.0;
+            sc.misc2[1] = static_cast<float>(1.0 - brightness);
+            faded_ = brightness < 1.0;
             executor_->set_scene(sc);
         }
         FrameStats fs = executor_->run();
@@ -458,6 +479,8 @@ private:
     WorldScale scale_{1.0};
     std::optional<glm::dvec3> period_;
     bool faded_ = false;
+    glm::dvec3 last_tracked_head_{0.0};
+    bool have_tracked_ = false;
     int wraps_ = 0;
     glm::dvec3 flown_{0.0};
     double head_extent_ = 0.0;
