@@ -68,6 +68,7 @@ int view(const ViewOptions& o) {
         co.validation = o.validation;
         co.device = o.device;
         co.require_timestamps = false;
+        co.shader_float64 = true;   // where supported: packs of precision "double" need it
         co.hooks = WindowPresenter::context_hooks();
         vk::Context ctx(co);
         struct Detach {

@@ -505,6 +505,7 @@ int play_xr(const XrPlayOptions& o) {
         co.validation = o.validation;
         co.device = o.device;
         co.require_timestamps = false;
+        co.shader_float64 = true;   // where supported: packs of precision "double" need it
         co.hooks = vulkan_creation_hooks(instance);
         std::size_t vk_errors = 0;
         int rc = 0;
