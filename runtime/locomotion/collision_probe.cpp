@@ -66,6 +66,9 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
     params_->flush();
     // Normals from differences a little finer than the scene's size.
     normal_step_ = std::max(1e-5, 1e-4 * static_cast<double>(scene.bounds[3]));
+    // A double pack's taps are float offsets from an anchor at the probe: no 1e-5 floor, so a deep
+    // zoom's bounds (2e-5 across) get normals on their own scale.
+    if (camera_relative_) normal_step_ = 1e-4 * static_cast<double>(scene.bounds[3]);
 
     VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;

@@ -97,6 +97,23 @@ TEST(DoublePrecision, a_node_that_cannot_be_lowered_is_named_in_the_error) {
     EXPECT_NE(text.find("tanh()"), std::string::npos) << text;
 }
 
+// Lowering keeps every line where it was, so a GLSL error in custom code still points at the node.
+TEST(DoublePrecision, a_glsl_error_in_lowered_custom_code_names_the_node) {
+    json g = fg::test::minimal_graph();
+    g["nodes"].push_back(json::parse(R"({"id": "typo", "type": "custom.glsl",
+        "ports": {"inputs": [{"name": "p", "type": "vec3", "default": "position"}],
+                  "outputs": [{"name": "d", "type": "float"}]},
+        "lipschitz": 1.0, "code": ["float r = length(p);", "d = lenght(p) - 0.5;"]})"));
+    g["outputs"]["distance"] = "typo.d";
+    g["scene"]["precision"] = "double";
+    fg::Diagnostics diag;
+    EXPECT_FALSE(fg::compile_graph(g.dump(), fg::NodeLibrary::builtin(), {}, diag));
+    const std::string text = diag.format();
+    EXPECT_NE(text.find("typo"), std::string::npos) << text;
+    EXPECT_NE(text.find("lenght"), std::string::npos) << text;
+    EXPECT_NE(text.find("line 2"), std::string::npos) << text;
+}
+
 TEST(DoublePrecision, packs_written_before_the_field_read_as_float) {
     fg::Diagnostics diag;
     auto result = fg::compile_graph(fg::test::minimal_graph().dump(), fg::NodeLibrary::builtin(), {}, diag);
