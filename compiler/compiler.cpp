@@ -1,5 +1,7 @@
 #include "compiler.h"
 
+#include "codegen/double_lowering.h"
+
 #include <chrono>
 #include <future>
 #include <fmt/format.h>
@@ -65,6 +67,19 @@ PassBuild build_pass(const PassTemplate& tmpl, const EffectSet& effects, const S
 
 }  // namespace
 
+// Precision "double" rewrites every body the scene uses; one that calls a function without a double
+// form (bit casts, derivatives, noise, hyperbolic functions) cannot be lowered: say which node.
+static void check_double_lowering(const IrGraph& ir, Diagnostics& diag) {
+    for (const auto& n : ir.nodes) {
+        const std::string& text = n.custom_def ? n.custom_code : n.def->glsl;
+        for (const auto& f : functions_without_double(text))
+            diag.error(fmt::format("node '{}' ({}) cannot be evaluated in double precision (scene.precision): it calls "
+                                   "{}(), which has no double form; use precision \"float\" or another node",
+                                   n.id, n.def->type, f),
+                       n.pointer, n.id);
+    }
+}
+
 std::string content_hash(std::string_view text) { return fmt::format("{:016x}", XXH64(text.data(), text.size(), 0)); }
 
 std::vector<std::uint32_t> std140_offsets(const std::vector<ValueType>& members, std::uint32_t& size) {
@@ -109,6 +124,10 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     if (diag.has_errors()) return std::nullopt;
     result.times.ir_ms = clock.lap();
 
+    if (options.double_precision) ir->scene.double_precision = *options.double_precision;
+    if (ir->scene.double_precision) check_double_lowering(*ir, diag);
+    if (diag.has_errors()) return std::nullopt;
+
     // Analyses.
     EffectSet effects = find_effects(*ir);
     result.lipschitz = analyse_lipschitz(*ir, diag);
@@ -132,6 +151,7 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
                                                 ir->scene.step_factor, ir->scene.step_factor / result.lipschitz.bound));
     m.period = analyse_periodicity(*ir).period;
     m.scene = scene_settings_to_json(ir->scene);
+    m.precision = ir->scene.double_precision ? "double" : "float";
     {
         std::vector<ValueType> types;
         for (const auto& p : ir->params) types.push_back(p.type == ValueType::Bool ? ValueType::Int : p.type);

@@ -26,6 +26,8 @@ inline constexpr const char* kCompilerVersion = "0.1.0";
 struct CompileOptions {
     bool optimize = true;          // run the SPIRV-Tools optimiser
     bool include_glsl = false;     // store each pass's GLSL in the pack (debugging)
+    // Overrides the graph's scene.precision: true "double", false "float" (fgc compile --precision).
+    std::optional<bool> double_precision;
 };
 
 struct CompiledPass {

@@ -1,5 +1,7 @@
 #include "scene_codegen.h"
 
+#include "double_lowering.h"
+
 #include <fmt/format.h>
 #include <functional>
 
@@ -17,6 +19,15 @@ SourceOrigin from_node(const IrNode& n) {
 }  // namespace
 
 std::string SceneCodegen::variable(int node, int port) { return fmt::format("n{}_{}", node, port); }
+
+std::string SceneCodegen::type_of(ValueType t) const { return double_ ? double_type_name(t) : std::string(type_name(t)); }
+
+std::string SceneCodegen::lowered(const std::string& glsl) const { return double_ ? lower_to_double(glsl) : glsl; }
+
+std::string SceneCodegen::in_precision(const std::string& value, ValueType t) const {
+    if (!double_ || t == ValueType::Int || t == ValueType::Bool) return value;
+    return fmt::format("{}({})", double_type_name(t), value);
+}
 
 void SceneCodegen::output_defines(GlslWriter& w) const {
     for (const auto& [name, _] : ir_.outputs) {
@@ -58,7 +69,13 @@ void SceneCodegen::declarations(GlslWriter& w) const {
     prelude.kind = SourceOrigin::Kind::Library;
     prelude.file = "nodes/prelude.glsl";
     prelude.line = 1;
-    w.write(library_.prelude(), prelude);
+    if (double_) {
+        SourceOrigin math = prelude;
+        math.file = "nodes/double_math.glsl";
+        w.write(lower_to_double(library_.double_math()), math);
+        w.write(double_math_vector_forms(), generated());
+    }
+    w.write(lowered(library_.prelude()), prelude);
     w.blank();
     bodies(w, needed_by({&ir_.outputs.at("distance")}), std::vector<bool>(ir_.nodes.size(), false));
 }
@@ -93,15 +110,15 @@ void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const st
             SourceOrigin head = from_node(n);
             std::string params;
             for (std::size_t i = 0; i < n.def->inputs.size(); ++i)
-                params += fmt::format("{}{} {}", params.empty() ? "" : ", ", n.inputs[i].type == ValueType::Bool ? "bool" : std::string(type_name(n.inputs[i].type)), n.def->inputs[i].name);
+                params += fmt::format("{}{} {}", params.empty() ? "" : ", ", n.inputs[i].type == ValueType::Bool ? "bool" : type_of(n.inputs[i].type), n.def->inputs[i].name);
             for (std::size_t i = 0; i < n.def->outputs.size(); ++i)
-                params += fmt::format("{}out {} {}", params.empty() ? "" : ", ", type_name(n.output_types[i]), n.def->outputs[i].name);
+                params += fmt::format("{}out {} {}", params.empty() ? "" : ", ", type_of(n.output_types[i]), n.def->outputs[i].name);
             w.line(fmt::format("void {}({})", n.def->function_name(), params), head);
             w.line("{", head);
             SourceOrigin code = head;
             code.pointer = n.custom_code_pointer;
             code.line = 1;
-            w.write(n.custom_code, code);
+            w.write(lowered(n.custom_code), code);
             w.line("}", head);
             w.blank();
             done.insert(key(n));
@@ -112,8 +129,8 @@ void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const st
         body.kind = SourceOrigin::Kind::Library;
         body.file = "nodes/" + n.def->glsl_path;
         body.line = 1;
-        if (n.generic) w.line(fmt::format("#define T {}", type_name(*n.generic)), generated());
-        w.write(n.def->glsl, body);
+        if (n.generic) w.line(fmt::format("#define T {}", type_of(*n.generic)), generated());
+        w.write(lowered(n.def->glsl), body);
         if (n.generic) w.line("#undef T", generated());
         w.blank();
     }
@@ -125,23 +142,23 @@ std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
         case IrInput::Kind::Node: v = variable(in.node, in.port); break;
         case IrInput::Kind::Param: {
             const auto& p = ir_.params[static_cast<std::size_t>(in.param)];
-            v = p.type == ValueType::Bool ? fmt::format("(fg_param.{} != 0)", p.name) : "fg_param." + p.name;
+            v = p.type == ValueType::Bool ? fmt::format("(fg_param.{} != 0)", p.name) : in_precision("fg_param." + p.name, p.type);
             break;
         }
-        case IrInput::Kind::Constant: v = in.constant.glsl(); break;
-        case IrInput::Kind::Knob: v = fmt::format("FG_KNOB_{}", in.knob_id); break;
+        case IrInput::Kind::Constant: v = lowered(in.constant.glsl()); break;
+        case IrInput::Kind::Knob: v = in_precision(fmt::format("FG_KNOB_{}", in.knob_id), in.source_type); break;
         case IrInput::Kind::Implicit:
             switch (in.implicit) {
                 case ImplicitSource::Position: v = "p"; break;
-                case ImplicitSource::Time: v = "fg_frame.time.x"; break;
-                case ImplicitSource::Light: v = "fg_scene.light_dir.xyz"; break;
-                case ImplicitSource::ToCamera: v = shading ? "fg_to_camera" : "vec3(0.0)"; break;
-                case ImplicitSource::Normal: v = shading ? "fg_normal" : "vec3(0.0)"; break;
-                case ImplicitSource::None: v = "0.0"; break;
+                case ImplicitSource::Time: v = in_precision("fg_frame.time.x", ValueType::Float); break;
+                case ImplicitSource::Light: v = in_precision("fg_scene.light_dir.xyz", ValueType::Vec3); break;
+                case ImplicitSource::ToCamera: v = in_precision(shading ? "fg_to_camera" : "vec3(0.0)", ValueType::Vec3); break;
+                case ImplicitSource::Normal: v = in_precision(shading ? "fg_normal" : "vec3(0.0)", ValueType::Vec3); break;
+                case ImplicitSource::None: v = lowered("0.0"); break;
             }
             break;
     }
-    if (in.source_type != in.type) v = fmt::format("{}({})", type_name(in.type), v);
+    if (in.source_type != in.type) v = fmt::format("{}({})", type_of(in.type), v);
     return v;
 }
 
@@ -153,7 +170,7 @@ void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*
         SourceOrigin o = from_node(n);
         std::string decl = "   ";
         for (std::size_t k = 0; k < n.output_types.size(); ++k)
-            decl += fmt::format(" {} {};", type_name(n.output_types[k]), variable(static_cast<int>(i), static_cast<int>(k)));
+            decl += fmt::format(" {} {};", type_of(n.output_types[k]), variable(static_cast<int>(i), static_cast<int>(k)));
         w.line(decl + fmt::format("  // {} ({})", n.id, n.def->type), o);
         std::string args;
         for (const auto& in : n.inputs) args += (args.empty() ? "" : ", ") + value_of(in, shading);
@@ -165,10 +182,18 @@ void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*
 
 void SceneCodegen::distance_function(GlslWriter& w) const {
     const auto& d = ir_.outputs.at("distance");
-    w.line("float fg_scene_distance(vec3 p)", generated());
+    w.line(double_ ? "double fg_scene_distance_d(dvec3 p)" : "float fg_scene_distance(vec3 p)", generated());
     w.line("{", generated());
     function_body(w, {&d}, false);
     w.line(fmt::format("    return {};", value_of(d, false)), generated());
+    w.line("}", generated());
+    w.blank();
+    if (!double_) return;
+    // The passes march in float relative to the anchor; distances near a surface are small, so
+    // float keeps their relative precision.
+    w.line("float fg_scene_distance(vec3 p)", generated());
+    w.line("{", generated());
+    w.line("    return float(fg_scene_distance_d(fg_anchor() + dvec3(p)));", generated());
     w.line("}", generated());
     w.blank();
 }
@@ -176,12 +201,20 @@ void SceneCodegen::distance_function(GlslWriter& w) const {
 void SceneCodegen::surface_function(GlslWriter& w) const {
     bodies(w, needed_by(surface_roots()), needed_by({&ir_.outputs.at("distance")}));
     w.line("struct FgSurface { vec3 albedo; float diffuse; float ao; float sss; float rim; vec3 emission; };", generated());
-    w.line("FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)", generated());
-    w.line("{", generated());
+    if (double_) {
+        w.line("FgSurface fg_scene_surface(vec3 fg_relative_p, vec3 fg_to_camera, vec3 fg_normal)", generated());
+        w.line("{", generated());
+        w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
+    } else {
+        w.line("FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)", generated());
+        w.line("{", generated());
+    }
     function_body(w, surface_roots(), true);
     auto field = [&](const char* name, const char* fallback) {
         auto it = ir_.outputs.find(name);
-        return it == ir_.outputs.end() ? std::string(fallback) : value_of(it->second, true);
+        if (it == ir_.outputs.end()) return std::string(fallback);
+        std::string v = value_of(it->second, true);
+        return double_ ? fmt::format("{}({})", type_name(it->second.type), v) : v;
     };
     w.line("    FgSurface s;", generated());
     w.line(fmt::format("    s.albedo = {};", field("albedo", "fg_scene.albedo.xyz")), generated());

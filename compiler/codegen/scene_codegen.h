@@ -3,6 +3,9 @@
 // graph uses (each once), custom-code functions, and the two entry points the pass templates call:
 //   float fg_scene_distance(vec3 p)                      only what the distance needs
 //   FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)   everything else
+// With scene.precision "double" the bodies are lowered to double (double_lowering.h) and evaluated
+// at fg_anchor() + p: the passes march in float relative to the camera, whose position the frame
+// uniforms hold in double (hi + lo floats), so positions keep their digits at any zoom.
 #include <set>
 #include <string>
 
@@ -16,6 +19,7 @@ class SceneCodegen {
 public:
     SceneCodegen(const IrGraph& ir, const NodeLibrary& library) : ir_(ir), library_(library) {}
 
+    bool double_precision() const { return double_; }
     // #defines naming the outputs the graph binds (FG_OUT_ALBEDO ...), for the shade template.
     void output_defines(GlslWriter& w) const;
     // Params block, knob constants, prelude and the bodies the distance needs.
@@ -28,6 +32,13 @@ public:
 private:
     const IrGraph& ir_;
     const NodeLibrary& library_;
+    bool double_ = ir_.scene.double_precision;
+
+    // The type's GLSL name in this scene's precision, a body in it, and a float-typed value
+    // (uniform, knob) converted to it.
+    std::string type_of(ValueType t) const;
+    std::string lowered(const std::string& glsl) const;
+    std::string in_precision(const std::string& value, ValueType t) const;
 
     // Nodes the distance (or the surface outputs) need, by IR index.
     std::vector<bool> needed_by(const std::vector<const IrInput*>& roots) const;

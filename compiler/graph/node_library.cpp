@@ -147,6 +147,7 @@ NodeLibrary NodeLibrary::from_files(std::span<const EmbeddedFile> files, Diagnos
     for (const auto& f : files) {
         std::string path(f.path);
         if (path.ends_with("prelude.glsl")) lib.prelude_ += std::string(f.text);
+        else if (path.ends_with("double_math.glsl")) lib.double_math_ += std::string(f.text);
         else if (path.ends_with(".glsl")) bodies[path.substr(0, path.size() - 5)] = f.text;
     }
     for (const auto& f : files) {

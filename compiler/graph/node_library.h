@@ -29,6 +29,8 @@ public:
     const NodeDefinition* find(const std::string& type) const;
     std::vector<const NodeDefinition*> all() const;   // sorted by type
     const std::string& prelude() const { return prelude_; }
+    // nodes/double_math.glsl: sin, pow, ... in double, for scenes compiled with precision "double".
+    const std::string& double_math() const { return double_math_; }
     // Types whose name is close to `type`, for "did you mean" hints.
     std::vector<std::string> similar(const std::string& type) const;
 
@@ -37,6 +39,7 @@ private:
                         std::string glsl_text, Diagnostics& diag);
     std::map<std::string, std::unique_ptr<NodeDefinition>> defs_;
     std::string prelude_;
+    std::string double_math_;
 };
 
 // Parse one definition; reports problems against json_path.

@@ -75,7 +75,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     const json& j = *jp;
     if (!r.object(j, ptr)) return s;
     r.check_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "vignette", "foveation", "bounds",
-                          "max_distance", "exposure", "scale", "locomotion", "step_factor"});
+                          "max_distance", "exposure", "scale", "locomotion", "step_factor", "precision"});
     if (j.contains("camera") && r.object(j["camera"], ptr + "/camera")) {
         const auto& c = j["camera"];
         std::string p = ptr + "/camera";
@@ -157,6 +157,11 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     r.number(j, "exposure", ptr, s.exposure, 0.0, 1e4);
     r.number(j, "scale", ptr, s.world_scale, 1e-12, 1e12);
     r.number(j, "step_factor", ptr, s.step_factor, 0.05, 1.0);
+    if (j.contains("precision")) {
+        const auto& v = j["precision"];
+        if (v == "float" || v == "double") s.double_precision = v == "double";
+        else diag.error("expected \"float\" or \"double\"", ptr + "/precision");
+    }
     if (j.contains("locomotion")) {
         if (r.object(j["locomotion"], ptr + "/locomotion")) s.locomotion = j["locomotion"];
     }
@@ -184,6 +189,7 @@ json scene_settings_to_json(const SceneSettings& s) {
     j["exposure"] = s.exposure;
     j["scale"] = s.world_scale;
     j["step_factor"] = s.step_factor;
+    if (s.double_precision) j["precision"] = "double";
     j["locomotion"] = s.locomotion;
     return j;
 }

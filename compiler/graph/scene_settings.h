@@ -56,6 +56,9 @@ struct SceneSettings {
     double max_distance = 100.0;                      // far limit of the march, in scene units
     double exposure = 1.0;
     double world_scale = 1.0;                         // initial viewer scale (locomotion)
+    // "double": the scene's code runs in double precision around a camera-relative origin (deep zooms
+    // of unit-size fractals); "float" everywhere else (docs/graph-format.md).
+    bool double_precision = false;
     double step_factor = 1.0;                         // times 1 / Lipschitz bound: the march's step scale (fgc calibrate)
     nlohmann::json locomotion = nlohmann::json::object();  // limits for the locomotion system
 

@@ -110,6 +110,7 @@ json manifest_to_json(const PackManifest& m) {
     j["name"] = m.name;
     j["compiler"] = m.compiler;
     j["graph_hash"] = m.graph_hash;
+    j["precision"] = m.precision;
     j["effects"] = m.effects.names();
     j["params_size"] = m.params_size;
     j["params"] = json::array();
@@ -168,6 +169,12 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
     m.name = r.str(j, "name", "");
     m.compiler = r.str(j, "compiler", "");
     m.graph_hash = r.str(j, "graph_hash", "");
+    // Absent in packs written before precision "double" existed: those are float.
+    if (j.contains("precision")) {
+        m.precision = r.str(j, "precision", "");
+        if (r.ok && m.precision != "float" && m.precision != "double")
+            r.fail("precision must be \"float\" or \"double\"", "/precision");
+    }
     if (auto* effects = r.array(j, "effects", "")) {
         for (std::size_t i = 0; i < effects->size(); ++i) {
             const auto& e = (*effects)[i];

@@ -80,6 +80,9 @@ struct PackManifest {
     std::optional<std::array<double, 3>> period;
     nlohmann::json scene = nlohmann::json::object();   // scene settings (graph/scene_settings.h)
     std::map<std::string, std::uint32_t> uniform_blocks;  // block type name -> size, from reflection
+    // "double": the scene runs in double around the camera and needs shaderFloat64. Packs written
+    // before the field existed are "float".
+    std::string precision = "float";
 
     const ManifestPass* find_pass(const std::string& name) const;
     const ManifestSpecConstant* find_spec(const std::string& name) const;

@@ -58,6 +58,7 @@ void print_summary(const PackManifest& m, std::size_t bytes) {
     std::vector<std::string> passes;
     for (const auto& p : m.passes) passes.push_back(p.name);
     fmt::print("  passes:     {}\n", join(passes));
+    if (m.precision == "double") fmt::print("  precision:  double (camera-relative; needs shaderFloat64)\n");
     const auto* step = m.find_spec("step_scale");
     fmt::print("  lipschitz:  {:.4g}{} (step scale {:.4g})\n", m.lipschitz_bound, m.lipschitz_exact ? "" : " (fallback)",
                step ? step->value : 1.0 / m.lipschitz_bound);
@@ -92,13 +93,14 @@ int check(const Common& c, const std::string& graph) {
 }
 
 int compile(const Common& c, const std::string& graph, const std::string& output_arg, const std::string& glsl_dir,
-            bool include_glsl, bool verbose) {
+            bool include_glsl, bool verbose, const std::string& precision) {
     Diagnostics diag;
     auto lib = library_for(c, diag);
     auto text = read_text(graph, diag);
     if (!text) return report(diag, graph);
     CompileOptions options;
     options.include_glsl = include_glsl;
+    if (!precision.empty()) options.double_precision = precision == "double";
     auto result = compile_graph(*text, lib, options, diag);
     if (report(diag, graph) != 0 || !result) return 1;
     std::string output = output_arg;

@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
     compile->add_option("--emit-glsl", glsl_dir, "also write each pass's generated GLSL into this folder");
     compile->add_flag("--include-glsl", include_glsl, "store the generated GLSL inside the pack (debugging)");
     compile->add_flag("-v,--verbose", verbose, "print stage timings and analysis results");
+    std::string precision;
+    compile->add_option("--precision", precision, "evaluate the scene in float or double (default: the graph's scene.precision)")
+        ->check(CLI::IsMember({"float", "double"}));
 
     auto* info = app.add_subcommand("info", "summarise a pack: effects, passes, knobs, parameters");
     info->add_option("pack", pack, "pack file")->required();
@@ -54,7 +57,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     if (*calibrate) return fg::fgc::calibrate(common, graph, calib);
     if (*check) return fg::fgc::check(common, graph);
-    if (*compile) return fg::fgc::compile(common, graph, output, glsl_dir, include_glsl, verbose);
+    if (*compile) return fg::fgc::compile(common, graph, output, glsl_dir, include_glsl, verbose, precision);
     if (*info) return fg::fgc::info(common, pack, json);
     if (*nodes) return fg::fgc::nodes(common, type, markdown);
     if (*probe) return fg::fgc::probe(common, graph, x, y, z);

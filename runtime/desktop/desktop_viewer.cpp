@@ -68,6 +68,7 @@ int view(const ViewOptions& o) {
         co.validation = o.validation;
         co.device = o.device;
         co.require_timestamps = false;
+        co.shader_float64 = true;   // where supported: packs of precision "double" need it
         co.hooks = WindowPresenter::context_hooks();
         vk::Context ctx(co);
         struct Detach {
@@ -184,7 +185,9 @@ int view(const ViewOptions& o) {
 
             stereo.world_scale = world_scale.current();
             StereoViews views = make_stereo_views(camera.pose(), fov_of(scene), fov_of(scene), stereo);
-            playing.executor->set_frame(make_gpu_frame(views, frame, frames / 60.0, world_scale.current(),
+            FrameSettings this_frame = frame;
+            this_frame.camera_relative = playing.executor->graph().settings.camera_relative;   // a double pack
+            playing.executor->set_frame(make_gpu_frame(views, this_frame, frames / 60.0, world_scale.current(),
                                                        static_cast<std::uint32_t>(frames)));
             // Flying and mouse-look are both artificial motion: both drive the comfort vignette. A
             // snap turn fades the image (misc2.y).

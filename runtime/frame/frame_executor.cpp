@@ -82,6 +82,14 @@ FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGrap
     };
     check_block("FgFrame", sizeof(GpuFrame));
     check_block("FgScene", sizeof(GpuScene));
+    // Without shaderFloat64 the pipelines would fail to build or, worse, a driver could run them
+    // in float: refuse up front.
+    if (manifest_.precision == "double" && !ctx.shader_float64_enabled())
+        throw std::runtime_error(fmt::format(
+            "the pack '{}' evaluates its scene in double precision (scene.precision \"double\"), and {} has no "
+            "shaderFloat64 (or the context was made without it); use a device with 64-bit floats, or recompile "
+            "with fgc compile --precision float (deep zooms then lose their structure)",
+            manifest_.name, ctx.device_name()));
     make_programs(pack);
     make_resources();
     make_descriptor_sets();

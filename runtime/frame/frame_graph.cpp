@@ -115,6 +115,7 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.centre_width = centre_width;
     g.centre_height = centre_height;
     g.settings = settings;
+    g.settings.camera_relative = manifest.precision == "double";
     if (g.settings.foveation < 0.0) {
         // As the scene says: its foveation block, or none.
         Diagnostics ignore;

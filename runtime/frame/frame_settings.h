@@ -31,6 +31,9 @@ struct FrameSettings {
     double foveation = -1.0;
     double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
+    // Set from the pack, not by the user: a pack of precision "double" gets its view origins
+    // relative to the camera (gpu_uniforms.h).
+    bool camera_relative = false;
 };
 
 }  // namespace fg

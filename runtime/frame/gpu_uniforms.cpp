@@ -31,6 +31,16 @@ GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings,
     f.views[0] = gpu_view(views.left, settings.lens_mask);
     f.views[1] = gpu_view(views.right, settings.lens_mask);
     f.views[2] = gpu_view(views.centre, false);   // the centre eye serves both lenses
+    const glm::dvec3 anchor = views.centre.origin;
+    const glm::dvec3 hi = glm::dvec3(glm::vec3(anchor));
+    f.anchor_hi = v4(hi);
+    f.anchor_lo = v4(anchor - hi);
+    if (settings.camera_relative) {
+        // Float keeps the few digits that separate the eyes only once the camera is subtracted.
+        f.views[0].origin = v4(views.left.origin - anchor);
+        f.views[1].origin = v4(views.right.origin - anchor);
+        f.views[2].origin = v4(views.centre.origin - anchor);
+    }
     f.size = {views.left.width, views.left.height, views.centre.width, views.centre.height};
     f.info = {frame_index, settings.cone_levels, 0, 0};
     f.foveation = {static_cast<float>(std::max(settings.foveation, 0.0)), static_cast<float>(settings.foveation_blend),
@@ -55,6 +65,7 @@ GpuScene make_gpu_scene(const nlohmann::json& scene_json) {
     if (s.fog) g.fog = v4(s.fog->color, s.fog->density);
     if (s.glow) g.glow = v4(s.glow->color * s.glow->intensity, s.glow->falloff);
     g.bounds = v4(s.bounds_center, s.bounds_radius);
+    g.bounds_lo = v4(s.bounds_center - glm::dvec3(glm::vec3(s.bounds_center)));
     g.misc = {static_cast<float>(s.exposure), static_cast<float>(s.max_distance),
               s.vignette ? static_cast<float>(s.vignette->strength) : 0.0f,
               s.foveation ? static_cast<float>(s.foveation->inner_radius) : 1.0f};

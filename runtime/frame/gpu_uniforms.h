@@ -23,14 +23,18 @@ struct GpuFrame {
     std::array<float, 4> time;         // seconds, world scale, ipd
     std::array<float, 4> pixel;        // half-diagonal tangent, tangent per pixel
     std::array<float, 4> foveation;    // fovea radius (0: off), blend band
+    // The centre eye in double as hi + lo floats; with settings.camera_relative (packs of precision
+    // "double") every view origin is relative to it.
+    std::array<float, 4> anchor_hi, anchor_lo;
 };
-static_assert(sizeof(GpuFrame) == 3 * 96 + 5 * 16);
+static_assert(sizeof(GpuFrame) == 3 * 96 + 7 * 16);
 
 struct GpuScene {
     std::array<float, 4> light_dir, light_color, ambient, sss_color, rim_color, albedo, bg_top, bg_bottom, fog, glow,
         bounds, misc, misc2;
+    std::array<float, 4> bounds_lo;    // what float loses of the bounds' centre (double packs add it)
 };
-static_assert(sizeof(GpuScene) == 13 * 16);
+static_assert(sizeof(GpuScene) == 14 * 16);
 
 // `settings` as the frame graph resolved them (lens mask, foveation).
 GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings, double time, double world_scale,

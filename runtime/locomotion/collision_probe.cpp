@@ -55,20 +55,20 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
     auto uniform = [&](std::size_t size) {
         return std::make_unique<vk::Buffer>(ctx, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
     };
-    GpuFrame frame{};
     GpuScene scene = make_gpu_scene(pack.manifest.scene);
     std::vector<std::byte> params = params_block(pack.manifest);
-    frame_ = uniform(sizeof frame);
     scene_ = uniform(sizeof scene);
     params_ = uniform(params.size());
-    std::memcpy(frame_->data(), &frame, sizeof frame);
     std::memcpy(scene_->data(), &scene, sizeof scene);
     std::memcpy(params_->data(), params.data(), params.size());
-    frame_->flush();
+    camera_relative_ = pack.manifest.precision == "double";
     scene_->flush();
     params_->flush();
     // Normals from differences a little finer than the scene's size.
     normal_step_ = std::max(1e-5, 1e-4 * static_cast<double>(scene.bounds[3]));
+    // A double pack's taps are float offsets from an anchor at the probe: no 1e-5 floor, so a deep
+    // zoom's bounds (2e-5 across) get normals on their own scale.
+    if (camera_relative_) normal_step_ = 1e-4 * static_cast<double>(scene.bounds[3]);
 
     VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -77,6 +77,10 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
     for (auto& slot : slots_) {
         slot.points = std::make_unique<vk::Buffer>(ctx, kMaxPoints * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
         slot.results = std::make_unique<vk::Buffer>(ctx, kMaxPoints * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+        GpuFrame frame{};
+        slot.frame = uniform(sizeof frame);
+        std::memcpy(slot.frame->data(), &frame, sizeof frame);
+        slot.frame->flush();
         VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         ai.commandPool = command_pool_;
         ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -86,7 +90,7 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
         vk::check(vkCreateFence(ctx.device(), &fi, nullptr, &slot.fence), "vkCreateFence");
         slot.set = pool_->allocate(*layout_);
         for (const auto& b : pass->bindings) {
-            if (b.name == "FgFrame") vk::write_uniform_buffer(ctx, slot.set, b.binding, *frame_);
+            if (b.name == "FgFrame") vk::write_uniform_buffer(ctx, slot.set, b.binding, *slot.frame);
             else if (b.name == "FgScene") vk::write_uniform_buffer(ctx, slot.set, b.binding, *scene_);
             else if (b.name == "FgParams") vk::write_uniform_buffer(ctx, slot.set, b.binding, *params_);
             else if (b.name == "FgProbePoints") vk::write_storage_buffer(ctx, slot.set, b.binding, *slot.points);
@@ -111,11 +115,22 @@ std::uint64_t CollisionProbe::submit(const std::vector<glm::dvec3>& points) {
         if (s.ticket == 0) free = &s;
     if (!free || points.empty()) return 0;
     std::size_t n = std::min(points.size(), kMaxPoints);
+    glm::dvec3 anchor(0.0);
+    if (camera_relative_) {
+        anchor = points[0];
+        GpuFrame frame{};
+        const glm::dvec3 hi = glm::dvec3(glm::vec3(anchor));
+        const glm::dvec3 lo = anchor - hi;
+        frame.anchor_hi = {static_cast<float>(hi.x), static_cast<float>(hi.y), static_cast<float>(hi.z), 0.0f};
+        frame.anchor_lo = {static_cast<float>(lo.x), static_cast<float>(lo.y), static_cast<float>(lo.z), 0.0f};
+        std::memcpy(free->frame->data(), &frame, sizeof frame);
+        free->frame->flush();
+    }
     auto* p = reinterpret_cast<float*>(free->points->data());
     for (std::size_t i = 0; i < n; ++i) {
-        p[4 * i + 0] = static_cast<float>(points[i].x);
-        p[4 * i + 1] = static_cast<float>(points[i].y);
-        p[4 * i + 2] = static_cast<float>(points[i].z);
+        p[4 * i + 0] = static_cast<float>(points[i].x - anchor.x);
+        p[4 * i + 1] = static_cast<float>(points[i].y - anchor.y);
+        p[4 * i + 2] = static_cast<float>(points[i].z - anchor.z);
         p[4 * i + 3] = 0.0f;
     }
     free->points->flush();

@@ -50,6 +50,9 @@ public:
 private:
     struct Slot {
         std::unique_ptr<vk::Buffer> points, results;
+        // Packs of precision "double" evaluate at the frame's anchor + point: each probe gets its
+        // own anchor (the first point), so the points travel as small float offsets.
+        std::unique_ptr<vk::Buffer> frame;
         VkCommandBuffer cmd = VK_NULL_HANDLE;
         VkFence fence = VK_NULL_HANDLE;
         VkDescriptorSet set = VK_NULL_HANDLE;
@@ -62,11 +65,12 @@ private:
     std::unique_ptr<vk::DescriptorSetLayout> layout_;
     std::unique_ptr<vk::ComputePipeline> pipeline_;
     std::unique_ptr<vk::DescriptorPool> pool_;
-    std::unique_ptr<vk::Buffer> frame_, scene_, params_;
+    std::unique_ptr<vk::Buffer> scene_, params_;
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     std::array<Slot, kSlots> slots_;
     std::uint32_t push_size_ = 0;
     double normal_step_ = 1e-4;
+    bool camera_relative_ = false;
     std::uint64_t next_ticket_ = 1;
 };
 

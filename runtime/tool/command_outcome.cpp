@@ -29,6 +29,7 @@ vk::ContextOptions render_context_options(bool validation, const std::string& de
     options.validation = validation;
     options.device = device;
     options.require_timestamps = false;
+    options.shader_float64 = true;   // on where supported: packs of precision "double" need it
     return options;
 }
 

@@ -330,7 +330,9 @@ private:
         }
         if (masks_dirty_) update_lens_masks(sv);
         if (first_time_ == 0) first_time_ = time;
-        GpuFrame gpu = make_gpu_frame(sv, frame_, static_cast<double>(time - first_time_) * 1e-9, play_.world_scale(),
+        FrameSettings this_frame = frame_;
+        this_frame.camera_relative = executor_->graph().settings.camera_relative;   // a double pack
+        GpuFrame gpu = make_gpu_frame(sv, this_frame, static_cast<double>(time - first_time_) * 1e-9, play_.world_scale(),
                                       static_cast<std::uint32_t>(stats_.frames));
         // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
         // pixels outside it are never marched.
@@ -528,6 +530,7 @@ int play_xr(const XrPlayOptions& o) {
         co.validation = o.validation;
         co.device = o.device;
         co.require_timestamps = false;
+        co.shader_float64 = true;   // where supported: packs of precision "double" need it
         co.hooks = vulkan_creation_hooks(instance);
         std::size_t vk_errors = 0;
         int rc = 0;

@@ -19,6 +19,7 @@ vk::ContextOptions options() {
     vk::ContextOptions o;
     o.validation = true;
     o.require_timestamps = false;
+    o.shader_float64 = true;   // the double variants of the node tests
     return o;
 }
 }  // namespace
@@ -33,39 +34,54 @@ GpuNodeEvaluator& GpuNodeEvaluator::shared() {
 std::optional<std::vector<CpuValue>> GpuNodeEvaluator::evaluate(const NodeDefinition& def,
                                                                 std::optional<ValueType> generic,
                                                                 const std::vector<CpuValue>& inputs, std::size_t count,
-                                                                Diagnostics& diag) {
-    const std::string glsl = evaluation_shader(def, generic, NodeLibrary::builtin().prelude());
-    auto spirv = compile_glsl("evaluate " + instance_name(def, generic), glsl, SourceMap{}, diag);
-    if (!spirv) return std::nullopt;
-    auto optimized = optimize_spirv("evaluate", *spirv, diag);
-    if (!optimized || !validate_spirv("evaluate", *optimized, diag)) return std::nullopt;
+                                                                Diagnostics& diag, bool in_double) {
+    const std::string glsl = evaluation_shader(def, generic, NodeLibrary::builtin().prelude(), in_double);
+    return run("evaluate " + instance_name(def, generic), glsl, inputs, count, def.outputs.size(), in_double, diag);
+}
 
-    const std::size_t nin = std::max<std::size_t>(def.inputs.size(), 1);
-    const std::size_t nout = def.outputs.size();
-    std::vector<float> in(count * nin * 4, 0.0f);
+namespace {
+template <class T>
+std::optional<std::vector<CpuValue>> run_as(const vk::Context& ctx, const std::vector<std::uint32_t>& spirv,
+                                            const std::vector<CpuValue>& inputs, std::size_t count, std::size_t nout) {
+    std::vector<T> in(std::max<std::size_t>(inputs.size(), 1) * 4, T(0));
     for (std::size_t i = 0; i < inputs.size(); ++i)
-        for (int c = 0; c < 4; ++c) in[i * 4 + static_cast<std::size_t>(c)] = static_cast<float>(inputs[i].v[c]);
-
-    vk::Buffer in_buffer(ctx_, in.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+        for (int c = 0; c < 4; ++c) in[i * 4 + static_cast<std::size_t>(c)] = static_cast<T>(inputs[i].v[c]);
+    vk::Buffer in_buffer(ctx, in.size() * sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
     in_buffer.upload(in);
-    vk::Buffer out_buffer(ctx_, count * nout * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+    vk::Buffer out_buffer(ctx, count * nout * 4 * sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                           vk::MemoryKind::Readback);
-    vk::DescriptorSetLayout layout(ctx_, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
-    vk::DescriptorPool pool(ctx_, layout, 1);
+    vk::DescriptorSetLayout layout(ctx, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
+    vk::DescriptorPool pool(ctx, layout, 1);
     VkDescriptorSet set = pool.allocate(layout);
-    vk::write_storage_buffer(ctx_, set, 0, in_buffer);
-    vk::write_storage_buffer(ctx_, set, 1, out_buffer);
-    vk::ComputePipeline pipeline(ctx_, *optimized, {layout.handle()}, 4);
+    vk::write_storage_buffer(ctx, set, 0, in_buffer);
+    vk::write_storage_buffer(ctx, set, 1, out_buffer);
+    vk::ComputePipeline pipeline(ctx, spirv, {layout.handle()}, 4);
     const auto n = static_cast<std::uint32_t>(count);
-    vk::OneShot::run(ctx_, [&](VkCommandBuffer cmd) {
+    vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
         pipeline.dispatch(cmd, set, {vk::groups_for(n, 64)}, vk::bytes_of(n));
         vk::compute_to_host_barrier(cmd);
     });
-    auto out = out_buffer.download_as<float>(count * nout * 4);
+    auto out = out_buffer.download_as<T>(count * nout * 4);
     std::vector<CpuValue> result(count * nout);
     for (std::size_t i = 0; i < result.size(); ++i)
-        for (int c = 0; c < 4; ++c) result[i].v[c] = out[i * 4 + static_cast<std::size_t>(c)];
+        for (int c = 0; c < 4; ++c) result[i].v[c] = static_cast<double>(out[i * 4 + static_cast<std::size_t>(c)]);
     return result;
+}
+}  // namespace
+
+std::optional<std::vector<CpuValue>> GpuNodeEvaluator::run(const std::string& name, const std::string& glsl,
+                                                           const std::vector<CpuValue>& inputs, std::size_t count,
+                                                           std::size_t nout, bool in_double, Diagnostics& diag) {
+    if (in_double && !ctx_.shader_float64_enabled()) {
+        diag.error(ctx_.device_name() + " has no shaderFloat64");
+        return std::nullopt;
+    }
+    auto spirv = compile_glsl(name, glsl, SourceMap{}, diag);
+    if (!spirv) return std::nullopt;
+    auto optimized = optimize_spirv(name, *spirv, diag);
+    if (!optimized || !validate_spirv(name, *optimized, diag)) return std::nullopt;
+    if (in_double) return run_as<double>(ctx_, *optimized, inputs, count, nout);
+    return run_as<float>(ctx_, *optimized, inputs, count, nout);
 }
 
 }  // namespace fg::test

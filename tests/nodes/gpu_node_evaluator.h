@@ -21,7 +21,12 @@ public:
     // count * def.outputs.size(). nullopt (with diagnostics) when the shader does not compile.
     std::optional<std::vector<CpuValue>> evaluate(const NodeDefinition& def, std::optional<ValueType> generic,
                                                   const std::vector<CpuValue>& inputs, std::size_t count,
-                                                  Diagnostics& diag);
+                                                  Diagnostics& diag, bool in_double = false);
+    // Runs a compute shader written like evaluation_shader(): `inputs` vec4s (dvec4 with
+    // in_double) at binding 0, `count * outputs_per_point` results at binding 1.
+    std::optional<std::vector<CpuValue>> run(const std::string& name, const std::string& glsl,
+                                             const std::vector<CpuValue>& inputs, std::size_t count,
+                                             std::size_t outputs_per_point, bool in_double, Diagnostics& diag);
     const vk::Context& context() const { return ctx_; }
 
 private:

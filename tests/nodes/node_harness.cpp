@@ -1,5 +1,7 @@
 #include "node_harness.h"
 
+#include "codegen/double_lowering.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -251,6 +253,19 @@ std::string read_input(ValueType t, const std::string& at) {
     return "0.0";
 }
 
+// The double forms: buffers of dvec4.
+std::string write_output_double(ValueType t, const std::string& var) {
+    switch (t) {
+        case ValueType::Float: return fmt::format("dvec4({}, 0.0, 0.0, 0.0)", var);
+        case ValueType::Int: return fmt::format("dvec4(double({}), 0.0, 0.0, 0.0)", var);
+        case ValueType::Bool: return fmt::format("dvec4({} ? 1.0 : 0.0, 0.0, 0.0, 0.0)", var);
+        case ValueType::Vec2: return fmt::format("dvec4({}, 0.0, 0.0)", var);
+        case ValueType::Vec3: return fmt::format("dvec4({}, 0.0)", var);
+        case ValueType::Vec4: return var;
+    }
+    return "dvec4(0.0)";
+}
+
 std::string write_output(ValueType t, const std::string& var) {
     switch (t) {
         case ValueType::Float: return fmt::format("vec4({}, 0.0, 0.0, 0.0)", var);
@@ -265,35 +280,47 @@ std::string write_output(ValueType t, const std::string& var) {
 
 }  // namespace
 
-std::string evaluation_shader(const NodeDefinition& def, std::optional<ValueType> generic, const std::string& prelude) {
+std::string evaluation_shader(const NodeDefinition& def, std::optional<ValueType> generic, const std::string& prelude,
+                              bool in_double) {
     const std::size_t nin = std::max<std::size_t>(def.inputs.size(), 1);
     const std::size_t nout = def.outputs.size();
-    std::string s = "#version 460\n"
-                    "layout(local_size_x = 64) in;\n"
-                    "layout(std430, set = 0, binding = 0) readonly buffer FgIn { vec4 v[]; } fg_in;\n"
-                    "layout(std430, set = 0, binding = 1) writeonly buffer FgOut { vec4 v[]; } fg_out;\n"
-                    "layout(push_constant) uniform FgPush { uint count; } pc;\n"
-                    "#define OUT(T) out T\n#define INOUT(T) inout T\n"
-                    "float fg_scene_distance(vec3 p) { return length(p) - 1.0; }\n";
-    s += prelude + "\n";
-    if (generic) s += fmt::format("#define T {}\n", type_name(*generic));
-    s += def.glsl + "\n";
+    const char* v4 = in_double ? "dvec4" : "vec4";
+    auto type = [&](ValueType t) { return in_double ? double_type_name(t) : std::string(type_name(t)); };
+    std::string s = fmt::format("#version 460\n"
+                                "layout(local_size_x = 64) in;\n"
+                                "layout(std430, set = 0, binding = 0) readonly buffer FgIn {{ {0} v[]; }} fg_in;\n"
+                                "layout(std430, set = 0, binding = 1) writeonly buffer FgOut {{ {0} v[]; }} fg_out;\n"
+                                "layout(push_constant) uniform FgPush {{ uint count; }} pc;\n"
+                                "#define OUT(T) out T\n#define INOUT(T) inout T\n",
+                                v4);
+    if (in_double) {
+        s += "double fg_scene_distance_d(dvec3 p) { return length(p) - 1.0lf; }\n";
+        s += lower_to_double(NodeLibrary::builtin().double_math()) + "\n" + double_math_vector_forms();
+        s += lower_to_double(prelude) + "\n";
+    } else {
+        s += "float fg_scene_distance(vec3 p) { return length(p) - 1.0; }\n";
+        s += prelude + "\n";
+    }
+    if (generic) s += fmt::format("#define T {}\n", type(*generic));
+    s += (in_double ? lower_to_double(def.glsl) : def.glsl) + "\n";
     if (generic) s += "#undef T\n";
     s += "void main()\n{\n    uint i = gl_GlobalInvocationID.x;\n    if (i >= pc.count) return;\n";
     std::string args;
     for (std::size_t k = 0; k < def.inputs.size(); ++k) {
         ValueType t = concrete_type(def.inputs[k].type, generic);
-        s += fmt::format("    {} in{} = {};\n", type_name(t), k, read_input(t, fmt::format("i * {}u + {}u", nin, k)));
+        s += fmt::format("    {} in{} = {};\n", type(t), k, read_input(t, fmt::format("i * {}u + {}u", nin, k)));
         args += fmt::format("{}in{}", args.empty() ? "" : ", ", k);
     }
     for (std::size_t k = 0; k < nout; ++k) {
-        s += fmt::format("    {} out{};\n", type_name(concrete_type(def.outputs[k].type, generic)), k);
+        s += fmt::format("    {} out{};\n", type(concrete_type(def.outputs[k].type, generic)), k);
         args += fmt::format("{}out{}", args.empty() ? "" : ", ", k);
     }
     s += fmt::format("    {}({});\n", def.function_name(), args);
-    for (std::size_t k = 0; k < nout; ++k)
+    for (std::size_t k = 0; k < nout; ++k) {
+        ValueType t = concrete_type(def.outputs[k].type, generic);
         s += fmt::format("    fg_out.v[i * {}u + {}u] = {};\n", nout, k,
-                         write_output(concrete_type(def.outputs[k].type, generic), fmt::format("out{}", k)));
+                         in_double ? write_output_double(t, fmt::format("out{}", k)) : write_output(t, fmt::format("out{}", k)));
+    }
     s += "}\n";
     return s;
 }

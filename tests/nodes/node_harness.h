@@ -46,7 +46,10 @@ bool feeds_distance(const NodeDefinition& def);
 // GLSL of a compute shader that reads each point's inputs (one vec4 per input) from binding 0,
 // calls the node body and writes its outputs (one vec4 each) to binding 1. Shade-context bodies
 // see the scene distance of a unit sphere, as the CPU test installs it.
-std::string evaluation_shader(const NodeDefinition& def, std::optional<ValueType> generic, const std::string& prelude);
+// With `in_double` the body, the prelude and the buffers are double (precision "double": the body
+// lowered as fgc lowers it, the math from nodes/double_math.glsl).
+std::string evaluation_shader(const NodeDefinition& def, std::optional<ValueType> generic, const std::string& prelude,
+                              bool in_double = false);
 
 // The scene distance that evaluation_shader() gives shade-context nodes, as a graph for the CPU twin.
 const char* unit_sphere_scene();

@@ -29,7 +29,10 @@ struct Comparison {
 };
 
 // Compares the GPU's answers for `def` with its CPU twin's.
-Comparison compare(const fg::NodeDefinition& def, std::optional<fg::ValueType> generic, std::uint32_t seed) {
+// With `in_double` the body runs lowered to double on the GPU (precision "double"), with the
+// double math of nodes/double_math.glsl, and the tolerances shrink accordingly.
+Comparison compare(const fg::NodeDefinition& def, std::optional<fg::ValueType> generic, std::uint32_t seed,
+                   bool in_double = false) {
     std::mt19937 rng(seed);
     std::vector<fg::CpuValue> inputs;
     for (std::size_t i = 0; i < kPoints; ++i) {
@@ -39,7 +42,7 @@ Comparison compare(const fg::NodeDefinition& def, std::optional<fg::ValueType> g
     }
     const std::size_t nin = std::max<std::size_t>(def.inputs.size(), 1), nout = def.outputs.size();
     fg::Diagnostics diag;
-    auto gpu = fg::test::GpuNodeEvaluator::shared().evaluate(def, generic, inputs, kPoints, diag);
+    auto gpu = fg::test::GpuNodeEvaluator::shared().evaluate(def, generic, inputs, kPoints, diag, in_double);
     Comparison c;
     if (!gpu) {
         ADD_FAILURE() << "the evaluation shader did not compile:\n" << diag.format();
@@ -60,7 +63,9 @@ Comparison compare(const fg::NodeDefinition& def, std::optional<fg::ValueType> g
 
     // An iterated map amplifies float rounding each iteration (about by the power per step for a
     // Mandelbulb), and orbit traps keep the minimum over the orbit: compare those within 1 %.
-    const double tolerance = fg::test::is_iterated(def) ? 1e-2 : 2e-4;
+    // In double both sides round alike; iterated maps still part near the surface, much later.
+    const double tolerance = in_double ? (fg::test::is_iterated(def) ? 1e-6 : 1e-10)
+                                       : (fg::test::is_iterated(def) ? 1e-2 : 2e-4);
     std::vector<fg::CpuValue> out(nout);
     for (std::size_t i = 0; i < kPoints; ++i) {
         function(&inputs[i * nin], out.data());
@@ -107,6 +112,24 @@ TEST_P(NodeTwin, gpu_and_cpu_twin_agree_at_random_points) {
         EXPECT_LE(c.mismatches, allowed) << c.mismatches << " of " << kPoints << " points disagree; first " << c.first;
     }
     EXPECT_EQ(fg::test::GpuNodeEvaluator::shared().context().validation_errors(), errors_before);
+}
+
+// Precision "double": every body lowered as fgc lowers it agrees with the CPU twin (also double)
+// far more closely than float can, which checks the lowering and the double math together.
+TEST_P(NodeTwin, double_variant_agrees_with_the_cpu_twin) {
+    const auto& def = fg::test::library_node(GetParam());
+    auto& gpu = fg::test::GpuNodeEvaluator::shared();
+    if (!gpu.context().shader_float64_enabled()) GTEST_SKIP() << "no shaderFloat64 on " << gpu.context().device_name();
+    const auto errors_before = gpu.context().validation_errors();
+    for (auto generic : fg::test::instances_of(def)) {
+        SCOPED_TRACE(fg::test::instance_name(def, generic));
+        auto c = compare(def, generic, 20261124u, true);
+        EXPECT_EQ(c.non_finite, 0u);
+        const std::size_t allowed = fg::test::is_iterated(def) ? kPoints / 50 : 0;
+        if (c.mismatches) std::printf("%s (double): %zu of %zu points beyond tolerance\n", def.type.c_str(), c.mismatches, kPoints);
+        EXPECT_LE(c.mismatches, allowed) << c.mismatches << " of " << kPoints << " points disagree; first " << c.first;
+    }
+    EXPECT_EQ(gpu.context().validation_errors(), errors_before);
 }
 
 FG_FOR_EVERY_NODE(NodeTwin);

@@ -51,6 +51,7 @@ vk::Context& shared_context() {
     static vk::Context ctx([] {
         vk::ContextOptions o;
         o.validation = true;
+        o.shader_float64 = true;   // the deep-zoom hard case is a double pack
         return o;
     }());
     return ctx;

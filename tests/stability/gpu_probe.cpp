@@ -13,7 +13,8 @@
 namespace fg::test {
 
 std::vector<glm::vec4> gpu_probe(const vk::Context& ctx, const Pack& pack, const std::vector<glm::dvec3>& points,
-                                 float normal_step) {
+                                 float normal_step, glm::dvec3 anchor) {
+    if (pack.manifest.precision != "double") anchor = glm::dvec3(0.0);
     const ManifestPass* pass = pack.manifest.find_pass("probe");
     if (!pass) throw std::runtime_error("the pack has no probe pass");
     std::vector<vk::DescriptorBinding> bindings;
@@ -32,6 +33,9 @@ std::vector<glm::vec4> gpu_probe(const vk::Context& ctx, const Pack& pack, const
     auto in = host(16 * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     auto out = host(16 * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     GpuFrame f{};
+    const glm::dvec3 hi = glm::dvec3(glm::vec3(anchor)), lo = anchor - hi;
+    f.anchor_hi = {static_cast<float>(hi.x), static_cast<float>(hi.y), static_cast<float>(hi.z), 0.0f};
+    f.anchor_lo = {static_cast<float>(lo.x), static_cast<float>(lo.y), static_cast<float>(lo.z), 0.0f};
     std::memcpy(frame->data(), &f, sizeof f);
     GpuScene s = make_gpu_scene(pack.manifest.scene);
     std::memcpy(scene->data(), &s, sizeof s);
@@ -49,7 +53,7 @@ std::vector<glm::vec4> gpu_probe(const vk::Context& ctx, const Pack& pack, const
             }
         }
     for (std::size_t i = 0; i < n; ++i) {
-        glm::vec4 v(glm::vec3(points[i]), 1.0f);
+        glm::vec4 v(glm::vec3(points[i] - anchor), 1.0f);
         std::memcpy(in->data() + 16 * i, &v, 16);
     }
     for (auto* b : {frame.get(), scene.get(), params.get(), in.get()}) b->flush();

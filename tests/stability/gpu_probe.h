@@ -10,8 +10,9 @@
 
 namespace fg::test {
 
-// x = distance, yzw = unit normal, one per point.
+// x = distance, yzw = unit normal, one per point. A pack of precision "double" gets the points
+// relative to `anchor` (in double, as the runtime's probes do); a float pack ignores it.
 std::vector<glm::vec4> gpu_probe(const vk::Context& ctx, const Pack& pack, const std::vector<glm::dvec3>& points,
-                                 float normal_step);
+                                 float normal_step, glm::dvec3 anchor = glm::dvec3(0.0));
 
 }  // namespace fg::test

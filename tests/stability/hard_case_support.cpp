@@ -71,12 +71,14 @@ std::vector<float> written_levels(const std::vector<float>& rg, std::uint32_t wi
 
 }  // namespace
 
-HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::string, double> knobs) {
+HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::string, double> knobs,
+                            bool count_evaluations) {
     FrameSettings fs;
     fs.width = fs.height = kHardCaseSize;
     fs.stereo = mode;
     fs.cone_levels = 4;
     fs.knobs = std::move(knobs);
+    fs.count_evaluations = count_evaluations;
     StereoSettings ss;
     ss.width = ss.height = kHardCaseSize;
     ss.world_scale = pack.manifest.scene.value("scale", 1.0);
@@ -99,7 +101,7 @@ std::size_t count_not_finite(const std::vector<float>& values) {
 
 OverstepReport check_oversteps(const CpuEvaluator& cpu, const SceneSettings& s, const View& view,
                                const std::vector<float>& depth, double pixel_half_diagonal, double epsilon,
-                               int stride, int samples) {
+                               int stride, int samples, bool camera_relative) {
     OverstepReport rep;
     const double cone = std::tan(pixel_half_diagonal);
     for (std::uint32_t y = static_cast<std::uint32_t>(stride / 2); y < view.height; y += static_cast<std::uint32_t>(stride))
@@ -115,7 +117,8 @@ OverstepReport check_oversteps(const CpuEvaluator& cpu, const SceneSettings& s, 
             ++rep.rays;
             double hit = depth[static_cast<std::size_t>(y) * view.width + x];
             // Float positions near p are spaced |p| * 2^-23 apart; allow two spacings.
-            double spacing = 0x1.0p-22 * (glm::length(ro) + std::max(hit, 0.0));
+            double spacing = camera_relative ? 0x1.0p-22 * std::max(hit, 0.0) + 0x1.0p-46 * glm::length(ro)
+                                             : 0x1.0p-22 * (glm::length(ro) + std::max(hit, 0.0));
             double end = hit >= 0.0 ? hit - epsilon * cone * hit - spacing : t1;
             for (int k = 0; k <= samples && end > t0; ++k) {
                 double t = t0 + (end - t0) * k / samples;

@@ -24,7 +24,8 @@ struct HardRender {
     StereoViews views;
     std::vector<std::pair<std::string, std::vector<float>>> float_images;   // every float image, decoded
 };
-HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::string, double> knobs = {});
+HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::string, double> knobs = {},
+                            bool count_evaluations = false);
 
 // Values that are NaN or infinite.
 std::size_t count_not_finite(const std::vector<float>& values);
@@ -38,9 +39,10 @@ struct OverstepReport {
 // Checks every `stride`-th pixel of one view: samples the CPU distance `samples` times from where
 // the ray enters the bounds to the reported hit less the tolerance (or to the exit on a miss).
 // Tolerance: epsilon cone radii at the hit, plus the spacing of float positions there (a float
-// march cannot place a point closer than that).
+// march cannot place a point closer than that). A camera-relative march (precision "double")
+// places points to float's spacing at t from the camera, plus the 48 bits of its hi + lo anchor.
 OverstepReport check_oversteps(const CpuEvaluator& cpu, const SceneSettings& s, const View& view,
                                const std::vector<float>& depth, double pixel_half_diagonal, double epsilon,
-                               int stride, int samples);
+                               int stride, int samples, bool camera_relative = false);
 
 }  // namespace fg::test

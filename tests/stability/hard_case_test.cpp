@@ -68,7 +68,7 @@ TEST_P(HardCase, the_march_never_steps_past_the_surface) {
             const View& view = eye ? r.views.right : r.views.left;
             const auto& depth = eye ? r.frame.depth_right : r.frame.depth_left;
             OverstepReport rep = check_oversteps(*cpu->evaluator, cpu->settings, view, depth, r.views.pixel_half_diagonal,
-                                                 epsilon, 4, 300);
+                                                 epsilon, 4, 300, pack.manifest.precision == "double");
             std::string what = fmt::format("{} {} eye {}: {} rays, {} overstepped, {} holes", GetParam(),
                                            stereo_mode_name(mode), eye, rep.rays, rep.overstepped, rep.holes);
             RecordProperty(fmt::format("{}_eye{}", stereo_mode_name(mode), eye), what);

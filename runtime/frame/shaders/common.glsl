@@ -18,6 +18,10 @@ layout(set = 0, binding = 0, std140) uniform FgFrame {
     vec4 time;           // x seconds, y world scale, z interpupillary distance (scene units), w unused
     vec4 pixel;          // x tangent of the half-diagonal of one full-resolution pixel; y tangent per pixel
     vec4 foveation;      // x fovea radius in half image heights (0: off), y blend band width
+    // The camera (centre eye) in double, as hi + lo floats. Packs of precision "double" evaluate
+    // the scene at fg_anchor() + p, and every origin above is then relative to it.
+    vec4 anchor_hi;
+    vec4 anchor_lo;
 } fg_frame;
 
 layout(set = 0, binding = 1, std140) uniform FgScene {
@@ -34,7 +38,25 @@ layout(set = 0, binding = 1, std140) uniform FgScene {
     vec4 bounds;         // xyz centre, w radius: rays outside this sphere miss
     vec4 misc;           // x exposure, y far limit, z vignette strength, w foveation inner radius
     vec4 misc2;          // x foveation blend, y fade to black (0 none, 1 black), zw unused
+    vec4 bounds_lo;      // xyz: the bounds' centre less its float value (precision "double" adds it)
 } fg_scene;
+
+#ifdef FG_DOUBLE_SCENE
+dvec3 fg_anchor()
+{
+    return dvec3(fg_frame.anchor_hi.xyz) + dvec3(fg_frame.anchor_lo.xyz);
+}
+#endif
+
+// The scene bounds' centre in the frame's coordinates (relative to the anchor in double packs).
+vec3 fg_bounds_centre()
+{
+#ifdef FG_DOUBLE_SCENE
+    return vec3((dvec3(fg_scene.bounds.xyz) + dvec3(fg_scene.bounds_lo.xyz)) - fg_anchor());
+#else
+    return fg_scene.bounds.xyz;
+#endif
+}
 
 // How a pixel becomes a ray (fg_frame.info.z, the same for every pass of a frame): the view's
 // perspective frustum (the headset), or offline panoramas: equirectangular around the view's
@@ -85,7 +107,7 @@ vec3 fg_ray_origin(int view, vec2 uv)
 // covers rays starting up to that far from ro (fg_origin_spread): the sphere grows by as much.
 vec2 fg_bounds_interval_spread(vec3 ro, vec3 rd, float cone_tan, float spread)
 {
-    vec3 oc = fg_scene.bounds.xyz - ro;
+    vec3 oc = fg_bounds_centre() - ro;
     float radius = fg_scene.bounds.w + spread;
     float far = fg_scene.misc.y;
     if (cone_tan > 0.0) {
