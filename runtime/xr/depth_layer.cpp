@@ -7,6 +7,7 @@
 
 #include "spirv/glsl_compiler.h"
 #include "vk/commands.h"
+#include "xr/eye_swapchain.h"
 #include "xr/xr_error.h"
 
 namespace fg::xr {
@@ -114,22 +115,8 @@ std::optional<std::int64_t> choose_depth_format(const std::vector<std::int64_t>&
 DepthSwapchain::DepthSwapchain(const vk::Context& ctx, XrSession session, std::int64_t format, std::uint32_t width,
                                std::uint32_t height)
     : format_(format), width_(width), height_(height) {
-    XrSwapchainCreateInfo info{XR_TYPE_SWAPCHAIN_CREATE_INFO};
-    info.usageFlags = XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT;
-    info.format = format;
-    info.sampleCount = 1;
-    info.width = width;
-    info.height = height;
-    info.faceCount = 1;
-    info.arraySize = 1;
-    info.mipCount = 1;
-    check(xrCreateSwapchain(session, &info, &swapchain_), "xrCreateSwapchain (depth)");
-    std::uint32_t count = 0;
-    check(xrEnumerateSwapchainImages(swapchain_, 0, &count, nullptr), "xrEnumerateSwapchainImages");
-    std::vector<XrSwapchainImageVulkan2KHR> images(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
-    check(xrEnumerateSwapchainImages(swapchain_, count, &count, reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data())),
-          "xrEnumerateSwapchainImages");
-    for (const auto& img : images) images_.push_back(img.image);
+    swapchain_ = create_vulkan_swapchain(session, XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT,
+                                         format, width, height, images_, "xrCreateSwapchain (depth)");
 
     Diagnostics diag;
     auto spirv = compile_glsl("xr depth layer", kDepthShader, SourceMap{}, diag);

@@ -15,10 +15,10 @@ std::int64_t choose_swapchain_format(const std::vector<std::int64_t>& offered) {
                   "the OpenXR runtime offers no 8-bit RGBA swapchain format (R8G8B8A8 or B8G8R8A8, UNORM or SRGB)");
 }
 
-EyeSwapchain::EyeSwapchain(XrSession session, std::int64_t format, std::uint32_t width, std::uint32_t height)
-    : width_(width), height_(height) {
+XrSwapchain create_vulkan_swapchain(XrSession session, XrSwapchainUsageFlags usage, std::int64_t format, std::uint32_t width,
+                                    std::uint32_t height, std::vector<VkImage>& images, const char* what) {
     XrSwapchainCreateInfo info{XR_TYPE_SWAPCHAIN_CREATE_INFO};
-    info.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT;
+    info.usageFlags = usage;
     info.format = format;
     info.sampleCount = 1;
     info.width = width;
@@ -26,14 +26,22 @@ EyeSwapchain::EyeSwapchain(XrSession session, std::int64_t format, std::uint32_t
     info.faceCount = 1;
     info.arraySize = 1;
     info.mipCount = 1;
-    check(xrCreateSwapchain(session, &info, &swapchain_), "xrCreateSwapchain");
+    XrSwapchain swapchain = XR_NULL_HANDLE;
+    check(xrCreateSwapchain(session, &info, &swapchain), what);
     std::uint32_t count = 0;
-    check(xrEnumerateSwapchainImages(swapchain_, 0, &count, nullptr), "xrEnumerateSwapchainImages");
-    std::vector<XrSwapchainImageVulkan2KHR> images(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
-    check(xrEnumerateSwapchainImages(swapchain_, count, &count,
-                                     reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data())),
+    check(xrEnumerateSwapchainImages(swapchain, 0, &count, nullptr), "xrEnumerateSwapchainImages");
+    std::vector<XrSwapchainImageVulkan2KHR> listed(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
+    check(xrEnumerateSwapchainImages(swapchain, count, &count, reinterpret_cast<XrSwapchainImageBaseHeader*>(listed.data())),
           "xrEnumerateSwapchainImages");
-    for (const auto& img : images) images_.push_back(img.image);
+    images.clear();
+    for (const auto& img : listed) images.push_back(img.image);
+    return swapchain;
+}
+
+EyeSwapchain::EyeSwapchain(XrSession session, std::int64_t format, std::uint32_t width, std::uint32_t height)
+    : width_(width), height_(height) {
+    swapchain_ = create_vulkan_swapchain(session, XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT,
+                                         format, width, height, images_, "xrCreateSwapchain");
 }
 
 EyeSwapchain::~EyeSwapchain() {

@@ -15,6 +15,10 @@ namespace fg::xr {
 // frame graph's final image already holds display values.
 std::int64_t choose_swapchain_format(const std::vector<std::int64_t>& offered);
 
+// A single-image, single-layer Vulkan swapchain of `usage` (colour or depth) and its images.
+XrSwapchain create_vulkan_swapchain(XrSession session, XrSwapchainUsageFlags usage, std::int64_t format, std::uint32_t width,
+                                    std::uint32_t height, std::vector<VkImage>& images, const char* what);
+
 class EyeSwapchain {
 public:
     EyeSwapchain(XrSession session, std::int64_t format, std::uint32_t width, std::uint32_t height);

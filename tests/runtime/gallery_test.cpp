@@ -19,13 +19,7 @@ namespace {
 
 constexpr std::uint32_t kSize = 64;
 
-std::vector<std::string> gallery_scenes() {
-    std::vector<std::string> out;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/graphs/gallery"))
-        if (e.path().extension() == ".json") out.push_back(e.path().stem().string());
-    std::sort(out.begin(), out.end());
-    return out;
-}
+std::vector<std::string> gallery_scenes() { return test::source_graph_names("graphs/gallery"); }
 
 // Scenes that surround the camera: every ray may hit.
 const std::set<std::string> kImmersive{"apollonian", "kleinian", "menger_twisted"};

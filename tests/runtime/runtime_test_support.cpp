@@ -1,5 +1,7 @@
 #include "runtime_test_support.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +14,14 @@ std::string read_source_file(const std::string& relative) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+std::vector<std::string> source_graph_names(const std::string& folder) {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/" + folder))
+        if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 Pack compile_pack(const std::string& graph_text) {

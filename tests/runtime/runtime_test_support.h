@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include <vector>
+
 #include "compiler.h"
 #include "cpu/cpu_evaluator.h"
 #include "frame/headless_renderer.h"
@@ -16,6 +18,9 @@
 namespace fg::test {
 
 std::string read_source_file(const std::string& relative);
+// File stems of the graphs (*.json) in a source folder ("graphs/gallery"), sorted: a new file is a
+// new test case without touching the tests.
+std::vector<std::string> source_graph_names(const std::string& folder);
 // Compiles graph text and reads the pack back, as fgplay would.
 Pack compile_pack(const std::string& graph_text);
 // The CPU twin of a pack's graph.

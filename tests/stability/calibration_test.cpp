@@ -3,9 +3,6 @@
 // thread count. Every fractal node of the library is covered without naming it.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <filesystem>
-
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -60,14 +57,6 @@ BubbleSearch searched(const Lowered& g, int samples, std::uint64_t seed, int thr
 class CalibratedHardCase : public ::testing::TestWithParam<std::string> {};
 class CalibratedGalleryGraph : public ::testing::TestWithParam<std::string> {};
 
-// File stems of graphs/gallery/*.json, sorted.
-std::vector<std::string> gallery_names() {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/graphs/gallery"))
-        if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 }  // namespace
 
@@ -174,7 +163,7 @@ TEST(BubbleSearch, the_surface_growth_exposes_a_bias_that_melts_the_scene) {
     EXPECT_GT(search.visible_surface().size(), 100u) << "the start view's rays should meet the surface";
 }
 
-INSTANTIATE_TEST_SUITE_P(Gallery, CalibratedGalleryGraph, ::testing::ValuesIn(gallery_names()),
+INSTANTIATE_TEST_SUITE_P(Gallery, CalibratedGalleryGraph, ::testing::ValuesIn(source_graph_names("graphs/gallery")),
                          [](const auto& info) { return test_name(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(Cases, CalibratedHardCase, ::testing::ValuesIn(hard_case_names()),

@@ -9,13 +9,7 @@
 
 namespace fg::test {
 
-std::vector<std::string> hard_case_names() {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/graphs/hard"))
-        if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> hard_case_names() { return source_graph_names("graphs/hard"); }
 
 std::string test_name(std::string name) {
     for (auto& c : name)
