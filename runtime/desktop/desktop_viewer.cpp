@@ -12,6 +12,8 @@
 #include "desktop/fly_camera.h"
 #include "desktop/pack_source.h"
 #include "desktop/window_presenter.h"
+#include "frame/frame_governor.h"
+#include "frame/trade_off_ladder.h"
 #include "locomotion/collision_witness.h"
 #include "locomotion/comfort_vignette.h"
 #include "locomotion/probed_flight.h"
@@ -89,14 +91,30 @@ int view(const ViewOptions& o) {
             return parse_scene_settings(&p.manifest.scene, "/scene", ignore);
         };
         auto fov_of = [&](const SceneSettings& s) { return Fov::symmetric(s.camera.fov_deg, double(o.width) / o.height); };
-        PackSource source(o.path, o.watch, [&](const Pack& p) {
+        // Executors follow `frame` and `stereo` as they are when built: the governor's level too.
+        auto build_executor = [&](const Pack& p) {
             SceneSettings s = scene_of(p);
             StereoSettings st = stereo;
             st.world_scale = s.world_scale;
             StereoViews v = make_stereo_views(HeadPose{}, fov_of(s), fov_of(s), st);
             return std::make_unique<FrameExecutor>(ctx, p, FrameGraph::build(p.manifest, frame, v.centre.width, v.centre.height));
-        });
+        };
+        PackSource source(o.path, o.watch, build_executor);
         LoadedPack playing = source.load_now();
+        // --budget-ms: the governor of `fgplay xr`, stepping along the same ladder.
+        const FrameSettings full_accuracy = frame;
+        std::unique_ptr<FrameGovernor> governor;
+        if (o.budget_ms > 0.0) {
+            std::vector<GovernorLevel> ladder;
+            if (!o.trade_offs.empty()) {
+                ladder = trade_off_ladder(playing.pack->manifest, read_trade_offs(o.trade_offs));
+                fmt::print("governor: {} levels from the Pareto front measured in {}\n", ladder.size(), o.trade_offs);
+            } else {
+                ladder = governor_ladder(playing.pack->manifest);
+                fmt::print("governor: the fixed ladder (no --trade-offs), {} levels\n", ladder.size());
+            }
+            governor = std::make_unique<FrameGovernor>(std::move(ladder));
+        }
         SceneSettings scene = scene_of(*playing.pack);
         fmt::print("fgplay view: {} on {} ({:.0f} ms to load, {:.0f} ms for pipelines)\n", o.path, ctx.device_name(),
                    playing.compile_ms, playing.pipelines_ms);
@@ -199,14 +217,39 @@ int view(const ViewOptions& o) {
             playing.executor->set_scene(scene_gpu);
             FrameStats stats = playing.executor->run();
             ++frames;
+            if (governor) {
+                auto gpu = stats.gpu_ms.find("frame");
+                if (gpu != stats.gpu_ms.end() && governor->observe(gpu->second, o.budget_ms)) {
+                    // A new level takes effect from the next frame: new sizes and pipelines.
+                    const GovernorLevel& level = governor->current();
+                    frame = full_accuracy;
+                    frame.width = std::max(8u, static_cast<std::uint32_t>(std::lround(o.width * level.render_scale)));
+                    frame.height = std::max(8u, static_cast<std::uint32_t>(std::lround(o.height * level.render_scale)));
+                    frame.foveation = level.foveation;
+                    frame.stereo = level.stereo.value_or(full_accuracy.stereo);
+                    frame.cone_levels = level.cone_levels.value_or(full_accuracy.cone_levels);
+                    for (const auto& [k, v] : level.knobs) frame.knobs[k] = v;
+                    stereo.width = frame.width;
+                    stereo.height = frame.height;
+                    ctx.wait_idle();
+                    playing.executor = build_executor(*playing.pack);
+                }
+                if (!governor->message().empty()) {
+                    fmt::print("governor: {}\n", governor->message());
+                    std::fflush(stdout);
+                }
+            }
             const bool last_frame = o.frames > 0 && frames == o.frames;
             Rgba8Image shot;
             presenter.present(playing.executor->image("final.left"),
                               side_by_side ? &playing.executor->image("final.right") : nullptr,
                               last_frame && !o.screenshot.empty() ? &shot : nullptr);
-            std::string title = fmt::format("fgplay view - {} - {} - {} - clearance {:.3g}{}{}", playing.pack->manifest.name,
+            std::string title = fmt::format("fgplay view - {} - {} - {} - clearance {:.3g}{}{}{}", playing.pack->manifest.name,
                                             side_by_side ? "side by side" : "left eye", pass_times(stats),
                                             flight->locomotion().guaranteed_clearance(camera.pose().position),
+                                            governor ? fmt::format(" - governor level {}/{} ({})", governor->level(),
+                                                                   governor->levels() - 1, governor->current().describe())
+                                                     : std::string(),
                                             source.compiling() ? " - compiling" : "", status.empty() ? "" : " - " + status);
             presenter.set_title(title);
             if (frames == 1 || last_frame) {

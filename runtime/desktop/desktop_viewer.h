@@ -2,7 +2,8 @@
 // `fgplay view`: a pack (or a graph, recompiled on save with --watch) in a desktop window.
 // Mouse-look with the left button held, WASD/QE to fly, the scroll wheel for speed, B for the
 // side-by-side stereo pair, Left/Right arrows for 90° snap turns (with a fade), -/= to shrink or
-// grow yourself (the world scale), Esc to quit. The title bar shows per-pass GPU times.
+// grow yourself (the world scale), Esc to quit. The title bar shows per-pass GPU times and, with
+// --budget-ms, the frame governor's level.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,6 +27,10 @@ struct ViewOptions {
     bool check_collisions = false;        // watch the head with the CPU twin and report
     // Scripted keys for tests: "KEY@FIRST-LAST" frames held (KEY: left, right, shrink, grow).
     std::vector<std::string> press;
+    // Holding a frame budget: the governor of `fgplay xr` (0: off), on the fixed ladder or on the
+    // Pareto front `fgplay bench` measured (its results.json).
+    double budget_ms = 0.0;
+    std::string trade_offs;
 };
 
 int view(const ViewOptions& options);

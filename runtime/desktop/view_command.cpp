@@ -20,6 +20,11 @@ void add_view_command(CLI::App& app, ViewCommand& c) {
                           "scripted keys (tests): KEY@FIRST-LAST frames held, KEY one of left, right, shrink, grow");
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
+    c.command->add_option("--budget-ms", c.options.budget_ms,
+                          "hold the GPU time of a frame under this budget with the frame governor (0: off)")->check(CLI::NonNegativeNumber);
+    c.command->add_option("--trade-offs", c.options.trade_offs,
+                          "with --budget-ms: the governor walks the Pareto front in this `fgplay bench` results.json")
+        ->check(CLI::ExistingFile);
     c.command->add_flag("--validation", c.options.validation, "Vulkan validation layer on; errors fail the run");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");
 }

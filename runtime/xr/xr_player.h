@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "frame/frame_settings.h"
-#include "xr/frame_governor.h"
+#include "frame/frame_governor.h"
 
 namespace fg::xr {
 

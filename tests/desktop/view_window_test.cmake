@@ -17,6 +17,26 @@ if(CASE STREQUAL "keys")
   endif()
   return()
 endif()
+if(CASE STREQUAL "governor")
+  # A budget no frame can meet: the governor steps down the ladder of the benchmark's measured
+  # front to its floor, says so, and the title shows the level.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                          ${XVFB_RUN} -a -s "-screen 0 320x240x24"
+                          ${FGPLAY} view ${PACK} --frames 40 --size 48x48 --budget-ms 0.001 --trade-offs ${TRADE_OFFS} --validation
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "Vulkan validation: 0 errors")
+    message(FATAL_ERROR "fgplay view failed (${rc})")
+  endif()
+  if(NOT out MATCHES "governor: ([0-9]+) levels from the Pareto front measured in")
+    message(FATAL_ERROR "the governor did not read the benchmark's front")
+  endif()
+  math(EXPR floor "${CMAKE_MATCH_1} - 1")
+  if(NOT out MATCHES "governor: at the floor" OR NOT out MATCHES "frame 40: fgplay view - [^\n]* - governor level ${floor}/${floor} ")
+    message(FATAL_ERROR "the governor did not reach its floor (level ${floor}) or the title does not show it")
+  endif()
+  return()
+endif()
 if(CASE STREQUAL "flight")
   # Autopilot straight ahead at 30 times the normal speed: the probes must stop it at the surface,
   # a head radius (0.05) away.

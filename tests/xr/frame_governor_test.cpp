@@ -1,7 +1,7 @@
 // The frame-rate governor: down under pressure, back up with room, no flicker in between.
 #include <gtest/gtest.h>
 
-#include "xr/frame_governor.h"
+#include "frame/frame_governor.h"
 
 namespace fg::xr {
 namespace {

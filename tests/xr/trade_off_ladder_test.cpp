@@ -10,7 +10,7 @@
 
 #include "bench_report.h"
 #include "frame/trade_off_front.h"
-#include "xr/trade_off_ladder.h"
+#include "frame/trade_off_ladder.h"
 
 namespace fg::xr {
 namespace {

@@ -8,9 +8,9 @@
 
 #include "frame/trade_off_front.h"
 #include "pack/manifest.h"
-#include "xr/frame_governor.h"
+#include "frame/frame_governor.h"
 
-namespace fg::xr {
+namespace fg {
 
 // Throws TradeOffError when a setting uses a knob this pack does not have, or a value outside the
 // knob's range (a front measured for another graph).
@@ -19,4 +19,4 @@ std::vector<GovernorLevel> trade_off_ladder(const PackManifest& manifest, const 
 // One line per level for the log: "level 0: \"naive ...\" 812 ms, 0.28 % misclassified".
 std::string describe_trade_off_ladder(const std::vector<TradeOff>& front);
 
-}  // namespace fg::xr
+}  // namespace fg

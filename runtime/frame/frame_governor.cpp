@@ -1,10 +1,10 @@
-#include "xr/frame_governor.h"
+#include "frame/frame_governor.h"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-namespace fg::xr {
+namespace fg {
 
 std::string GovernorLevel::describe() const {
     std::string s = name.empty() ? "" : fmt::format("\"{}\": ", name);
@@ -84,4 +84,4 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
     return true;
 }
 
-}  // namespace fg::xr
+}  // namespace fg

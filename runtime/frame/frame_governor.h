@@ -16,7 +16,7 @@
 #include "frame/frame_settings.h"
 #include "pack/manifest.h"
 
-namespace fg::xr {
+namespace fg {
 
 struct GovernorLevel {
     double render_scale = 1.0;           // of the per-eye render size
@@ -65,4 +65,4 @@ private:
     std::string message_;
 };
 
-}  // namespace fg::xr
+}  // namespace fg

@@ -1,8 +1,8 @@
-#include "xr/trade_off_ladder.h"
+#include "frame/trade_off_ladder.h"
 
 #include <fmt/format.h>
 
-namespace fg::xr {
+namespace fg {
 
 std::vector<GovernorLevel> trade_off_ladder(const PackManifest& manifest, const std::vector<TradeOff>& front) {
     std::vector<GovernorLevel> ladder;
@@ -39,4 +39,4 @@ std::string describe_trade_off_ladder(const std::vector<TradeOff>& front) {
     return s;
 }
 
-}  // namespace fg::xr
+}  // namespace fg
