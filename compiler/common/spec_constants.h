@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 15> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 16> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -53,6 +53,8 @@ inline constexpr std::array<GlobalKnob, 15> kGlobalKnobs{{
      "full-resolution steps before a still-marching pixel moves to the compacted tail pass; 0 is off"},
     {15, "shade_reuse", "FG_SHADE_REUSE", ValueType::Float, 0.0, 0.0, 16.0,
      "the right eye takes the left eye's shading where both see the same point within this many cone radii; 0 is off"},
+    {16, "persistent_lanes", "FG_PERSISTENT_LANES", ValueType::Bool, 0, 0, 1,
+     "full-resolution marching passes hand each SIMD lane the next pixel as soon as its ray ends (same frames)"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -20,10 +20,18 @@
 
 namespace fg {
 
+// SIMD lanes of a marching pass group, counted with subgroup ballots in the counting frame: every
+// iteration of a marching loop adds its subgroup's size to `total` and its lanes that evaluate to `busy`.
+struct LaneCount {
+    std::uint64_t busy = 0, total = 0;
+    double efficiency() const { return total ? static_cast<double>(busy) / static_cast<double>(total) : 0.0; }
+};
+
 struct FrameStats {
     std::map<std::string, double> gpu_ms;              // per timer group, plus "frame"
     std::map<std::string, std::uint64_t> evaluations;  // per counter group (if counting)
     double evaluations_per_pixel = 0.0;                // all groups, per output pixel of both eyes
+    std::map<std::string, LaneCount> lanes;            // per counter group (if counting)
 };
 
 class FrameExecutor {
