@@ -6,10 +6,16 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <set>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include "common/embedded_file.h"
 #include "frame/trade_off_front.h"
+
+namespace fg {
+std::span<const EmbeddedFile> embedded_bench_scripts();   // generated (bench/fg_bench.cmake)
+}
 
 namespace fg::bench {
 
@@ -137,12 +143,20 @@ void BenchReport::write(const std::string& folder) const {
 }
 
 void BenchReport::plot(const std::string& folder) const {
-    std::string script = std::string(FG_SOURCE_DIR) + "/bench/plot_bench.py";
+    // The script is inside the binary (bench/fg_bench.cmake), so no source tree is needed: it runs
+    // from a temporary copy.
+    std::string_view script;
+    for (const auto& f : embedded_bench_scripts())
+        if (f.path == "plot_bench.py") script = f.text;
+    const auto copy = std::filesystem::temp_directory_path() / fmt::format("fgplay_plot_bench_{}.py", getpid());
+    std::ofstream(copy, std::ios::binary) << script;
     std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    std::string cmd = fmt::format("{} '{}' '{}'", python, script, folder);
+    std::string cmd = fmt::format("{} '{}' '{}'", python, copy.string(), folder);
     std::fflush(stdout);
-    if (std::system(cmd.c_str()) != 0)
-        fmt::print("note: plotting failed; run `{}` (needs python3-matplotlib)\n", cmd);
+    if (script.empty() || std::system(cmd.c_str()) != 0)
+        fmt::print("note: plotting failed (it needs python3-matplotlib); results.json holds every figure\n");
+    std::error_code ignored;
+    std::filesystem::remove(copy, ignored);
 }
 
 std::string BenchReport::summary_line() const {

@@ -13,6 +13,7 @@
 #include "common/diagnostics.h"
 #include "common/effects.h"
 #include "common/value_type.h"
+#include "graph/scene_settings.h"
 
 namespace fg {
 
@@ -78,7 +79,7 @@ struct PackManifest {
     // The scene repeats with this period on every axis (analysis/periodicity.h); absent in packs
     // from before it was recorded and in scenes that do not repeat.
     std::optional<std::array<double, 3>> period;
-    nlohmann::json scene = nlohmann::json::object();   // scene settings (graph/scene_settings.h)
+    SceneSettings scene;               // decoded once, when the manifest is read
     std::map<std::string, std::uint32_t> uniform_blocks;  // block type name -> size, from reflection
     // "double": the scene runs in double around the camera and needs shaderFloat64. Packs written
     // before the field existed are "float".

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 #include <stdexcept>
 
-#include "graph/scene_settings.h"
 
 namespace fg {
 
@@ -118,10 +117,9 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.settings.camera_relative = manifest.precision == "double";
     if (g.settings.foveation < 0.0) {
         // As the scene says: its foveation block, or none.
-        Diagnostics ignore;
-        auto scene = parse_scene_settings(&manifest.scene, "/scene", ignore);
-        g.settings.foveation = scene.foveation ? scene.foveation->inner_radius : 0.0;
-        if (scene.foveation) g.settings.foveation_blend = scene.foveation->blend;
+        const auto& foveation = manifest.scene.foveation;
+        g.settings.foveation = foveation ? foveation->inner_radius : 0.0;
+        if (foveation) g.settings.foveation_blend = foveation->blend;
     }
     if (settings.projection != Projection::Perspective) {
         // The lens mask and foveation are the headset's: a panorama has neither lens nor gaze.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "graph/scene_settings.h"
 #include "lens_mask.h"
 
 namespace fg {
@@ -50,9 +49,7 @@ GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings,
     return f;
 }
 
-GpuScene make_gpu_scene(const nlohmann::json& scene_json) {
-    Diagnostics ignore;  // the pack reader has already checked the settings
-    SceneSettings s = parse_scene_settings(&scene_json, "/scene", ignore);
+GpuScene make_gpu_scene(const SceneSettings& s) {
     GpuScene g{};
     g.light_dir = v4(s.light.direction);
     g.light_color = v4(s.light.color);

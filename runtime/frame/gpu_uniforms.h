@@ -4,9 +4,8 @@
 #include <array>
 #include <cstdint>
 
-#include <nlohmann/json.hpp>
-
 #include "frame_settings.h"
+#include "graph/scene_settings.h"
 #include "stereo_rig.h"
 
 namespace fg {
@@ -39,7 +38,7 @@ static_assert(sizeof(GpuScene) == 14 * 16);
 // `settings` as the frame graph resolved them (lens mask, foveation).
 GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings, double time, double world_scale,
                         std::uint32_t frame_index);
-// From the manifest's scene settings (graph/scene_settings.h).
-GpuScene make_gpu_scene(const nlohmann::json& scene);
+// From the manifest's scene settings.
+GpuScene make_gpu_scene(const SceneSettings& s);
 
 }  // namespace fg

@@ -2,8 +2,6 @@
 
 #include <cstring>
 
-#include "graph/scene_settings.h"
-
 namespace fg {
 
 namespace {
@@ -26,15 +24,12 @@ HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, con
 }
 
 HeadPose HeadlessRenderer::scene_camera() const {
-    Diagnostics ignore;
-    auto s = parse_scene_settings(&pack_.manifest.scene, "/scene", ignore);
-    return look_at(s.camera.position, s.camera.target, s.camera.up);
+    const auto& camera = pack_.manifest.scene.camera;
+    return look_at(camera.position, camera.target, camera.up);
 }
 
 Fov HeadlessRenderer::scene_fov() const {
-    Diagnostics ignore;
-    auto s = parse_scene_settings(&pack_.manifest.scene, "/scene", ignore);
-    return Fov::symmetric(s.camera.fov_deg, static_cast<double>(frame_.width) / frame_.height);
+    return Fov::symmetric(pack_.manifest.scene.camera.fov_deg, static_cast<double>(frame_.width) / frame_.height);
 }
 
 StereoViews HeadlessRenderer::make_views(const HeadPose& head) const {

@@ -54,10 +54,9 @@ class XrPlayer {
 public:
     XrPlayer(const OpenXrInstance& instance, const vk::Context& ctx, const Pack& pack, const XrPlayOptions& o)
         : instance_(instance), ctx_(ctx), pack_(pack), options_(o) {
-        Diagnostics ignore;
-        scene_ = parse_scene_settings(&pack.manifest.scene, "/scene", ignore);
+        scene_ = pack.manifest.scene;
         origin_ = look_at(scene_.camera.position, scene_.camera.target, scene_.camera.up);
-        scene_gpu_ = make_gpu_scene(pack.manifest.scene);
+        scene_gpu_ = make_gpu_scene(scene_);
         play_ = PlaySpace(origin_, scene_.world_scale);
         scale_ = WorldScale(scene_.world_scale);
         if (pack.manifest.period) period_ = glm::dvec3((*pack.manifest.period)[0], (*pack.manifest.period)[1], (*pack.manifest.period)[2]);
@@ -107,7 +106,7 @@ public:
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         stereo_.world_scale = scene_.world_scale;
-        flight_ = std::make_unique<ProbedFlight>(ctx, pack, locomotion_settings(scene_.locomotion), scene_.world_scale);
+        flight_ = std::make_unique<ProbedFlight>(ctx, pack, scene_.locomotion, scene_.world_scale);
         if (o.check_collisions) witness_ = std::make_unique<CollisionWitness>(pack);
     }
 
