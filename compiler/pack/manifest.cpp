@@ -129,7 +129,8 @@ json manifest_to_json(const PackManifest& m) {
                 {"spec_constants", p.spec_constants},
                 {"bindings", json::array()}};
         for (const auto& b : p.bindings)
-            pj["bindings"].push_back({{"set", b.set}, {"binding", b.binding}, {"kind", b.kind}, {"name", b.name}});
+            pj["bindings"].push_back(
+                {{"set", b.set}, {"binding", b.binding}, {"kind", b.kind}, {"name", b.name}, {"access", b.access}});
         j["passes"].push_back(pj);
     }
     j["spec_constants"] = json::array();
@@ -282,6 +283,12 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
                     b.kind = r.str((*bs)[k], "kind", bp);
                     b.name = r.str((*bs)[k], "name", bp);
                     if (!b.kind.empty() && !kinds.count(b.kind)) r.fail(fmt::format("unknown binding kind \"{}\"", b.kind), bp);
+                    if ((*bs)[k].contains("access")) {
+                        b.access = r.str((*bs)[k], "access", bp);
+                        if (b.access != "read" && b.access != "write" && b.access != "read_write")
+                            r.fail(fmt::format("access is \"read\", \"write\" or \"read_write\", not \"{}\"", b.access),
+                                   bp + "/access");
+                    }
                     p.bindings.push_back(b);
                 }
             }
