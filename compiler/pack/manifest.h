@@ -34,6 +34,9 @@ struct ManifestBinding {
     std::uint32_t binding = 0;
     std::string kind;   // uniform_buffer, storage_buffer, storage_image, sampled_image
     std::string name;   // the block or image name in the shader
+    // What the shader may do with it, from its qualifiers: "read" (readonly, uniform blocks),
+    // "write" (writeonly) or "read_write". Packs from before it was recorded read as "read_write".
+    std::string access = "read_write";
 };
 
 // An accuracy knob as a specialization constant. Ids start at 1: id 0 is never used.

@@ -204,12 +204,12 @@ int view(const ViewOptions& o) {
             playing.executor->set_frame(make_gpu_frame(views, this_frame, frames / 60.0, world_scale.current(),
                                                        static_cast<std::uint32_t>(frames)));
             // Flying and mouse-look are both artificial motion: both drive the comfort vignette. A
-            // snap turn fades the image (misc2.y).
+            // snap turn fades the image.
             GpuScene scene_gpu = make_gpu_scene(scene);
-            if (scene_gpu.misc[2] > 0.0f)
-                scene_gpu.misc[2] = static_cast<float>(comfort_vignette(
-                    glm::length(flight->locomotion().velocity()) / world_scale.current(), turn, scene_gpu.misc[2]));
-            scene_gpu.misc2[1] = static_cast<float>(1.0 - snapped.brightness);
+            if (scene_gpu.vignette > 0.0f)
+                scene_gpu.vignette = static_cast<float>(comfort_vignette(
+                    glm::length(flight->locomotion().velocity()) / world_scale.current(), turn, scene_gpu.vignette));
+            scene_gpu.fade = static_cast<float>(1.0 - snapped.brightness);
             playing.executor->set_scene(scene_gpu);
             FrameStats stats = playing.executor->run();
             ++frames;

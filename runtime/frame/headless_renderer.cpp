@@ -42,7 +42,6 @@ void HeadlessRenderer::set_world_scale(double world_scale) { stereo_.world_scale
 RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
     views_ = make_views(head);
     GpuFrame gpu = make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index);
-    gpu.info[2] = static_cast<std::uint32_t>(frame_.projection);
     executor_->set_frame(gpu);
     RenderedFrame out;
     out.stats = executor_->run();
