@@ -19,6 +19,7 @@
 #include "frame/cpu_reference_tracer.h"
 #include "frame/headless_renderer.h"
 #include "frame/lens_mask.h"
+#include "frame/strict_reference.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
 
@@ -58,16 +59,6 @@ std::optional<std::string> read_text(const std::string& path) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
-}
-
-// The reference: the naive tracer with a tenth of the default epsilon and a generous step cap.
-FrameSettings reference_settings(std::uint32_t size) {
-    FrameSettings f;
-    f.width = f.height = size;
-    f.stereo = StereoMode::Naive;
-    f.foveation = 0.0;
-    f.knobs = {{"epsilon", 0.05}, {"max_steps", 2000}};
-    return f;
 }
 
 // Compiles a graph three times: the first compile in a process also initialises glslang.
@@ -176,7 +167,7 @@ int run_bench(const BenchOptions& o) {
             auto it = refs.find(sz);
             if (it != refs.end()) return it->second;
             Reference ref;
-            HeadlessRenderer r(ctx, *pack, reference_settings(sz), stereo);
+            HeadlessRenderer r(ctx, *pack, strict_reference_settings(pack->manifest, sz, sz), stereo);
             ref.frame = r.render(view.head, 0.0);
             ref.views = r.views();
             return refs[sz] = std::move(ref);
@@ -187,7 +178,7 @@ int run_bench(const BenchOptions& o) {
             ReferenceSettings rs;
             rs.epsilon = 0.05;
             rs.max_steps = 4000;
-            rs.step_scale = pack->manifest.find_spec("step_scale")->value;
+            rs.step_scale = 0.5 * pack->manifest.find_spec("step_scale")->value;   // as the strict reference
             double cone = std::tan(ref.views.pixel_half_diagonal);
             for (int k = 0; k < 64; ++k) {
                 std::uint32_t x = rng() % size, y = rng() % size;
