@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "frame_graph.h"
+#include "resolve_pass.h"
 
 namespace fg {
 
@@ -38,6 +39,7 @@ void add_view(FrameGraph& g, int view) {
     // Persistent lanes' work queues at full resolution: one word per dispatch (stride 1 and 2).
     std::string lanes = "lanes." + name;
     g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each full-resolution dispatch" : "(persistent lanes off)"});
+    std::string rays = add_rays_buffer(g, view, w, h);
     auto level_pass = [&](std::uint32_t k, int stride) {
         FramePass p;
         p.label = fmt::format("conemarch.{}.L{}", name, k);
@@ -48,6 +50,7 @@ void add_view(FrameGraph& g, int view) {
         p.bind("fg_depth", depth, Access::Write);
         p.bind("FgTail", queue, Access::ReadWrite);
         p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+        p.bind("FgRays", rays, Access::Write);
         if (glow) p.bind("fg_glow", "glow." + name, Access::Write);
         p.persistent_lanes = k == 0 && g.persistent_lanes;
         p.counter_slot = g.counter_slot(fmt::format("march.L{}", k));
@@ -66,6 +69,7 @@ void add_view(FrameGraph& g, int view) {
     } else {
         g.add_pixel_pass(view, [&](int stride) { return level_pass(0, stride); });
     }
+    if (g.persistent_lanes) add_resolve_pass(g, view, w, h, atlas);
     if (tail) {
         FramePass p;
         p.label = "tail." + name;

@@ -1,6 +1,7 @@
 // The baseline tracer's place in the frame graph (shader: shaders/naive.comp): plain sphere tracing
 // of every output view, in naive stereo mode only.
 #include "frame_graph.h"
+#include "resolve_pass.h"
 
 namespace fg {
 
@@ -13,6 +14,7 @@ void add_naive_passes(FrameGraph& g) {
         if (glow) g.add_image({"glow." + eye, g.width, g.height, ImageFormat::R32F, "closest approach along the ray"});
         std::string lanes = "lanes." + eye;
         g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each dispatch" : "(persistent lanes off)"});
+        std::string rays = add_rays_buffer(g, view, g.width, g.height);
         std::int32_t slot = g.counter_slot("march");
         g.add_pixel_pass(view, [&](int stride) {
             FramePass p;
@@ -22,11 +24,13 @@ void add_naive_passes(FrameGraph& g) {
             p.bind("fg_depth", "depth." + eye, Access::Write);
             if (glow) p.bind("fg_glow", "glow." + eye, Access::Write);
             p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+            p.bind("FgRays", rays, Access::Write);
             p.persistent_lanes = g.persistent_lanes;
             p.counter_slot = slot;
             p.set_push(NaivePush{view, slot, stride});
             return p;
         });
+        if (g.persistent_lanes) add_resolve_pass(g, view, g.width, g.height, "");
     }
 }
 

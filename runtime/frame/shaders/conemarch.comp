@@ -4,6 +4,7 @@
 //! include: tail_queue.glsl
 //! include: march_counters.glsl
 //! include: lane_queue.glsl
+//! include: march_rays.glsl
 // Progressive cone marching (Fulcrum's Fractus, Framestore's VR fractals), one dispatch per level
 // from coarse to fine. A level-k pixel marches a cone that covers its 2^k x 2^k footprint, starting
 // where its parent stopped, and stops as soon as the cone may touch a surface: its distance is a
@@ -155,6 +156,10 @@ void fg_fine_finish(FgFineRay r)
     bool capped = !r.hit && !r.escaped && !r.deferred && r.i == FG_FINE_STEPS;
     if (r.hit || (capped && !FG_MISS_ON_STEP_CAP)) result = r.t;
     if (result != FG_MISS) bound = min(bound, result);
+    if (FG_PERSISTENT_LANES) {
+        fg_ray_result(r.pixel, fg_view_size(pc.view).x, vec4(result, bound, r.closest, 0.0));
+        return;
+    }
     imageStore(fg_levels, r.pixel, vec4(result, bound, 0.0, 0.0));
     if (!r.deferred) {
         imageStore(fg_depth, r.pixel, vec4(result));
@@ -180,36 +185,37 @@ bool fg_skip_outside_lens(ivec2 pixel, ivec4 rect, ivec2 full)
     return true;
 }
 
-// Persistent lanes at full resolution: lanes take pixels (of this dispatch's stride) from the
-// queue until it runs dry; a lane whose ray ends takes the next pixel in the same iteration.
-void fg_fine_persistent(ivec2 full)
+// Persistent lanes: bursts of marching while most lanes have a ray; between bursts, the rays that
+// ended are written (to the rays buffer: resolve.comp moves them into the images) and their lanes
+// take new pixels (of this dispatch's stride) from the queue, until it runs dry.
+void fg_fine_persistent(ivec2 size)
 {
-    ivec2 grid = (full + ivec2(pc.stride - 1)) / pc.stride;
+    ivec2 grid = (size + ivec2(pc.stride - 1)) / pc.stride;
     FgFineRay r;
     r.marching = false;
-    bool working = false;
+    bool ended = false;   // r is a ray that ended and is not written yet
+    bool dry = false;
     while (true) {
-        uint index = fg_take_work(!working, uint(pc.stride - 1));
-        if (!working) {
-            ivec2 cell = fg_work_cell(index, grid);
-            if (cell.x < 0) break;
+        if (ended) fg_fine_finish(r);
+        ended = false;
+        if (!r.marching && !dry) {
+            ivec2 cell = fg_work_cell(fg_take_work(true, uint(pc.stride - 1)), grid);
             ivec2 pixel = cell * pc.stride;
-            if (cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(pc.view, pixel, pc.stride) &&
-                !fg_skip_outside_lens(pixel, ivec4(0, 0, full), full)) {
-                r = fg_fine_begin(pixel, full);
-                working = true;
-                if (!r.marching) {
-                    fg_fine_finish(r);
-                    working = false;
-                }
+            dry = cell.x < 0;
+            // Pixels outside the lens get their miss from the resolve pass.
+            if (!dry && cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(pc.view, pixel, pc.stride) &&
+                !fg_outside_lens(pc.view, pixel)) {
+                r = fg_fine_begin(pixel, size);
+                ended = !r.marching;
             }
         }
-        fg_count_iteration(working);
-        if (!working) continue;
-        fg_fine_step(r);
-        if (!r.marching) {
-            fg_fine_finish(r);
-            working = false;
+        if (dry && !r.marching && !ended) break;
+        while (fg_lanes_burst(r.marching)) {
+            fg_count_iteration(r.marching);
+            if (r.marching) {
+                fg_fine_step(r);
+                ended = !r.marching;
+            }
         }
     }
 }

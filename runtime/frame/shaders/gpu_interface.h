@@ -125,6 +125,11 @@ struct PostPush {
     int stride;
 };
 
+struct ResolvePush {
+    int view;
+    int levels;              // 1: also the level-0 atlas (conemarch), 0: depth and glow only (naive)
+};
+
 struct FoveaPush {
     int view;
 };

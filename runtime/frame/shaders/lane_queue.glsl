@@ -1,13 +1,29 @@
 // Persistent lanes (Aila and Laine 2009, "Understanding the efficiency of ray traversal on GPUs"):
-// a fixed number of workgroups loop, and each lane takes the next pixel from a queue as soon as its
-// ray ends, so no SIMD lane idles while its group waits for the slowest ray. Each pixel's march is
+// a fixed number of workgroups loop, and lanes whose rays ended take the next pixels from a queue,
+// so SIMD lanes do not idle while their group waits for the slowest ray. Each pixel's march is
 // the same computation either way, so frames are bit-identical with and without.
 //
 // Work is handed out in 8x8 tiles, and in Morton order inside a tile, so the rays of one subgroup
 // stay close together (coherent memory, similar step counts). One atomic per subgroup fetches work
 // for every lane that needs it (ballot and prefix count), not one per lane.
 
+
 layout(set = 0, binding = 13, std430) buffer FgLaneQueue { uint next[]; } fg_lane_queue;
+
+const float FG_BURST_SHARE = 0.75;
+
+// Whether a burst of marching goes on: while at least FG_BURST_SHARE of the subgroup's lanes (or
+// all of those still working) have a ray. Lanes are refilled between bursts, all at once, rather
+// than each as its ray ends: SIMD hardware that runs both sides of a branch under a mask (as
+// llvmpipe does) would otherwise pay for a ray's setup and its stores in every step, and on GPUs it
+// keeps the fetch, the setup and the stores coherent.
+bool fg_lanes_burst(bool marching)
+{
+    uint marching_lanes = subgroupBallotBitCount(subgroupBallot(marching));
+    uint lanes = subgroupBallotBitCount(subgroupBallot(true));
+    uint share = max(1u, uint(ceil(float(gl_SubgroupSize) * FG_BURST_SHARE)));
+    return marching_lanes > 0u && marching_lanes >= min(lanes, share);
+}
 
 // The next work index for each lane with `need` (others get 0xffffffff), from queue word `slot`.
 uint fg_take_work(bool need, uint slot)

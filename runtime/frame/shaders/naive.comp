@@ -3,6 +3,7 @@
 //! when: always
 //! include: march_counters.glsl
 //! include: lane_queue.glsl
+//! include: march_rays.glsl
 // The baseline: plain sphere tracing of one eye at full resolution, every pixel on its own. Every
 // speed figure is a ratio against this pass, and tests use it as a reference. With
 // FG_PERSISTENT_LANES its lanes take pixels from a queue (lane_queue.glsl): the stronger baseline,
@@ -70,6 +71,10 @@ void fg_naive_finish(FgNaiveRay r)
     bool in_bounds = r.range.x <= r.range.y;
     bool capped = in_bounds && !r.hit && !r.escaped && r.i == FG_MAX_STEPS;
     float result = r.hit || (capped && !FG_MISS_ON_STEP_CAP) ? r.t : FG_MISS;
+    if (FG_PERSISTENT_LANES) {
+        fg_ray_result(r.pixel, int(fg_frame.eye_size.x), vec4(result, 0.0, r.closest, 0.0));
+        return;
+    }
     imageStore(fg_depth, r.pixel, vec4(result));
 #ifdef FG_HAS_GLOW
     imageStore(fg_glow, r.pixel, vec4(r.closest));
@@ -87,34 +92,37 @@ bool fg_skip_outside_lens(ivec2 pixel)
     return true;
 }
 
+// Persistent lanes: bursts of marching while most lanes have a ray; between bursts, the rays that
+// ended are written (to the rays buffer: resolve.comp moves them into the images) and their lanes
+// take new pixels (of this dispatch's stride) from the queue, until it runs dry.
 void fg_naive_persistent(ivec2 size)
 {
     ivec2 grid = (size + ivec2(pc.stride - 1)) / pc.stride;
     FgNaiveRay r;
     r.marching = false;
-    bool working = false;
+    bool ended = false;   // r is a ray that ended and is not written yet
+    bool dry = false;
     while (true) {
-        uint index = fg_take_work(!working, uint(pc.stride - 1));
-        if (!working) {
-            ivec2 cell = fg_work_cell(index, grid);
-            if (cell.x < 0) break;
+        if (ended) fg_naive_finish(r);
+        ended = false;
+        if (!r.marching && !dry) {
+            ivec2 cell = fg_work_cell(fg_take_work(true, uint(pc.stride - 1)), grid);
             ivec2 pixel = cell * pc.stride;
-            if (cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(pc.view, pixel, pc.stride) &&
-                !fg_skip_outside_lens(pixel)) {
+            dry = cell.x < 0;
+            // Pixels outside the lens get their miss from the resolve pass.
+            if (!dry && cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(pc.view, pixel, pc.stride) &&
+                !fg_outside_lens(pc.view, pixel)) {
                 r = fg_naive_begin(pixel, size);
-                working = true;
-                if (!r.marching) {
-                    fg_naive_finish(r);
-                    working = false;
-                }
+                ended = !r.marching;
             }
         }
-        fg_count_iteration(working);
-        if (!working) continue;
-        fg_naive_step(r);
-        if (!r.marching) {
-            fg_naive_finish(r);
-            working = false;
+        if (dry && !r.marching && !ended) break;
+        while (fg_lanes_burst(r.marching)) {
+            fg_count_iteration(r.marching);
+            if (r.marching) {
+                fg_naive_step(r);
+                ended = !r.marching;
+            }
         }
     }
 }
