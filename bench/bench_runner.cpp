@@ -19,32 +19,14 @@
 #include "frame/cpu_reference_tracer.h"
 #include "frame/headless_renderer.h"
 #include "frame/lens_mask.h"
+#include "frame_measures.h"
 #include "pack/pack_reader.h"
+#include "sequence_runner.h"
 #include "vk/context.h"
 
 namespace fg::bench {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
-// Over the visible pixels only, when `visible` (lens_mask.h) is given.
-double psnr(const Rgba8Image& a, const Rgba8Image& b, std::span<const std::uint8_t> visible) {
-    double se = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-        if (i % 4 == 3 || (i / 4 < visible.size() && !visible[i / 4])) continue;
-        double d = static_cast<double>(a.pixels[i]) - b.pixels[i];
-        se += d * d;
-        ++n;
-    }
-    if (se == 0.0) return 99.0;
-    return 10.0 * std::log10(255.0 * 255.0 / (se / static_cast<double>(n)));
-}
 
 struct Reference {
     RenderedFrame frame;
@@ -58,16 +40,6 @@ std::optional<std::string> read_text(const std::string& path) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
-}
-
-// The reference: the naive tracer with a tenth of the default epsilon and a generous step cap.
-FrameSettings reference_settings(std::uint32_t size) {
-    FrameSettings f;
-    f.width = f.height = size;
-    f.stereo = StereoMode::Naive;
-    f.foveation = 0.0;
-    f.knobs = {{"epsilon", 0.05}, {"max_steps", 2000}};
-    return f;
 }
 
 // Compiles a graph three times: the first compile in a process also initialises glslang.
@@ -93,6 +65,7 @@ std::optional<CompileFigure> measure_compile(const std::string& path, std::optio
 }  // namespace
 
 int run_bench(const BenchOptions& o) {
+    if (o.sequence) return run_sequence_bench(o);
     // Mesa caches compiled pipelines on disk; a benchmark must not time a warm cache one run and
     // a cold one the next.
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);

@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
     bench->add_option("--device", b.device, "Vulkan device: index or name substring");
     bool no_plots = false;
     bench->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+    bench->add_flag("--sequence", b.sequence, "head traces at 90 Hz per scene and setting (--frames per trace, default 90)");
+    bench->add_option("--trace", b.traces, "with --sequence: look_around, walk, fast_turn, flight, snap_turn (repeatable)");
+    bench->add_option("--scene", b.scenes, "with --sequence: a graph or pack (repeatable; default the gallery's bulb, box, Kleinian)");
 
 #ifdef FG_HAVE_XR
     fg::xr::XrCommand xr;
@@ -78,7 +81,7 @@ int main(int argc, char** argv) {
     if (view.chosen()) return view.run();
 #endif
     if (*bench) {
-        if (b.pack.empty() == b.graph.empty()) {
+        if (!b.sequence && b.pack.empty() == b.graph.empty()) {
             fmt::print(stderr, "fgplay bench: give a pack or --graph, not both\n");
             return 2;
         }

@@ -1,0 +1,288 @@
+#include "sequence_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "bench_views.h"
+#include "compiler.h"
+#include "frame/accuracy_metrics.h"
+#include "frame/gpu_uniforms.h"
+#include "frame/headless_renderer.h"
+#include "frame/lens_mask.h"
+#include "frame_measures.h"
+#include "head_trace.h"
+#include "pack/pack_reader.h"
+#include "sequence_report.h"
+#include "sequence_settings.h"
+#include "vk/context.h"
+
+namespace fg::bench {
+
+namespace {
+
+// Counting evaluations takes a frame of its own; one frame in six samples a 90-frame trace 15 times.
+constexpr int kCountEvery = 6, kQuickCountEvery = 4;
+
+std::vector<std::string> default_scenes(bool quick) {
+    const std::string gallery = std::string(FG_SOURCE_DIR) + "/graphs/gallery/";
+    if (quick) return {gallery + "mandelbulb.json"};
+    return {gallery + "mandelbulb.json", gallery + "mandelbox.json", gallery + "kleinian.json"};
+}
+
+// A scene ready to fly: its pack, compiled once, and its CPU twin (which reads the IR it was made from).
+struct Scene {
+    std::string name;
+    Pack pack;
+    std::unique_ptr<IrGraph> ir;
+    std::optional<CpuEvaluator> twin;
+};
+
+std::optional<Scene> load_scene(const std::string& path, Diagnostics& diag) {
+    std::optional<Pack> pack;
+    if (std::filesystem::path(path).extension() == ".fgpack") {
+        pack = read_pack_file(path, diag);
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) {
+            diag.error(fmt::format("cannot read {}", path));
+            return std::nullopt;
+        }
+        std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        auto compiled = compile_graph(text, NodeLibrary::builtin(), {}, diag);
+        if (compiled) pack = read_pack(pack_bytes(*compiled), diag);
+    }
+    if (!pack) return std::nullopt;
+    auto ir = load_and_lower(pack->graph, NodeLibrary::builtin(), diag);
+    if (!ir) return std::nullopt;
+    Scene scene{std::filesystem::path(path).stem().string(), std::move(*pack), std::make_unique<IrGraph>(std::move(*ir)),
+                std::nullopt};
+    scene.twin = CpuEvaluator::create(*scene.ir, diag);   // the traces need it: a scene without one is refused
+    if (!scene.twin) return std::nullopt;
+    return scene;
+}
+
+// The strict reference of one frame; empty for a dark frame.
+struct ReferenceFrame {
+    Rgba8Image left, right;
+    std::vector<double> depth_left, depth_right;
+};
+
+// A snap turn's fade as `fgplay xr` applies it: the last pass scales the image.
+void set_brightness(HeadlessRenderer& renderer, const GpuScene& scene, double brightness) {
+    GpuScene faded = scene;
+    faded.misc2[1] = static_cast<float>(1.0 - brightness);
+    renderer.executor().set_scene(faded);
+}
+
+// The renderers of one setting, kept for the whole scene, and the pixels its viewer sees.
+struct SettingRenderers {
+    std::unique_ptr<HeadlessRenderer> timed, counting;
+    std::vector<std::uint8_t> seen_left, seen_right;   // empty: every pixel (no lens mask)
+
+    SettingRenderers(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame, const StereoSettings& stereo) {
+        timed = std::make_unique<HeadlessRenderer>(ctx, pack, frame, stereo);
+        FrameSettings counted = frame;
+        counted.count_evaluations = true;
+        counting = std::make_unique<HeadlessRenderer>(ctx, pack, counted, stereo);
+        if (frame.lens_mask) {
+            const StereoViews& v = timed->views();
+            seen_left = visible_pixels(lens_ellipse(v.left), v.left.width, v.left.height);
+            seen_right = visible_pixels(lens_ellipse(v.right), v.right.width, v.right.height);
+        }
+    }
+};
+
+void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel_half_diagonal,
+             const SettingRenderers& r, SequenceFrame& out) {
+    DepthComparison left = compare_depths(frame.depth_left, ref.depth_left, pixel_half_diagonal, r.seen_left);
+    DepthComparison right = compare_depths(frame.depth_right, ref.depth_right, pixel_half_diagonal, r.seen_right);
+    out.misclassified_pct = 50.0 * (left.misclassified + right.misclassified);
+    out.overstepped_pct = 100.0 * static_cast<double>(left.overstepped + right.overstepped) /
+                          static_cast<double>(std::max<std::size_t>(1, left.pixels + right.pixels));
+    out.not_finite = left.not_finite + right.not_finite;
+    out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
+}
+
+// One setting through one trace: a warm-up frame, then every frame in order on the timed renderer,
+// every `count_every`-th also on the counting one. Dark frames are skipped by both, as a headset would.
+void fly(SettingRenderers& r, const HeadTrace& trace, const std::vector<ReferenceFrame>& refs, double pixel_half_diagonal,
+         const GpuScene& scene, int count_every, SequenceRow& row) {
+    r.timed->set_world_scale(trace.world_scale);
+    r.counting->set_world_scale(trace.world_scale);
+    set_brightness(*r.timed, scene, 1.0);
+    r.timed->render(trace.frames.front().head, trace.frames.front().time, 0);   // pipelines and caches warm
+    for (std::size_t i = 0; i < trace.frames.size(); ++i) {
+        const TraceFrame& tf = trace.frames[i];
+        SequenceFrame f;
+        f.index = static_cast<int>(i);
+        f.dark = tf.brightness <= 0.0;
+        if (!f.dark) {
+            const auto index = static_cast<std::uint32_t>(i);
+            set_brightness(*r.timed, scene, tf.brightness);
+            RenderedFrame frame = r.timed->render(tf.head, tf.time, index);
+            f.gpu_ms = frame.stats.gpu_ms.count("frame") ? frame.stats.gpu_ms.at("frame") : 0.0;
+            compare(frame, refs[i], pixel_half_diagonal, r, f);
+            if (i % static_cast<std::size_t>(count_every) == 0) {
+                set_brightness(*r.counting, scene, tf.brightness);
+                FrameStats counted = r.counting->render(tf.head, tf.time, index).stats;
+                f.evaluations_per_pixel = counted.evaluations_per_pixel;
+                if (row.counter_groups.empty())
+                    for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
+                for (const auto& [group, lanes] : counted.lanes) {
+                    row.lanes[group].busy += lanes.busy;
+                    row.lanes[group].total += lanes.total;
+                }
+            }
+        }
+        row.frames.push_back(f);
+    }
+}
+
+double load_average() {
+    double one_minute = -1.0;
+    return getloadavg(&one_minute, 1) == 1 ? one_minute : -1.0;
+}
+
+std::string minutes(double seconds) {
+    return seconds < 90.0 ? fmt::format("{:.0f} s", seconds) : fmt::format("{:.0f} min", seconds / 60.0);
+}
+
+}  // namespace
+
+int run_sequence_bench(const BenchOptions& o) {
+    // Mesa caches compiled pipelines on disk; a benchmark must not time a warm cache one run and
+    // a cold one the next.
+    setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    const std::uint32_t size = o.size ? o.size : (o.quick ? 64 : 512);
+    const int frames = o.frames ? o.frames : (o.quick ? 12 : 90);
+    const int count_every = o.quick ? kQuickCountEvery : kCountEvery;
+    const auto& known = head_trace_names();
+    for (const auto& t : o.traces)
+        if (std::find(known.begin(), known.end(), t) == known.end()) {
+            fmt::print(stderr, "fgplay bench --sequence: no trace '{}'; the traces are {}\n", t, fmt::join(known, ", "));
+            return 2;
+        }
+    std::vector<std::string> scenes = o.scenes;
+    for (const auto& given : {o.pack, o.graph})
+        if (!given.empty()) scenes.push_back(given);
+    if (scenes.empty()) scenes = default_scenes(o.quick);
+    const std::vector<std::string> wanted = o.traces.empty() ? known : o.traces;
+    std::filesystem::create_directories(o.out);
+
+    vk::ContextOptions ctx_options;
+    ctx_options.device = o.device;
+    ctx_options.require_timestamps = false;
+    vk::Context ctx(ctx_options);
+    const auto settings = make_sequence_settings(size, o.quick);
+    SequenceReport report;
+    report.device = ctx.device_name();
+    report.size = size;
+    report.frames = frames;
+    report.count_every = count_every;
+    report.load_start = load_average();
+    fmt::print("sequence benchmark on {}: {} scenes x {} traces x {} settings, {}x{} per eye, {} frames per trace at "
+               "{:g} Hz\n",
+               ctx.device_name(), scenes.size(), wanted.size(), settings.size(), size, size, frames, kHeadsetHz);
+    if (!ctx.timestamps_supported()) fmt::print("note: no GPU timestamps on this device; times are missing\n");
+
+    // Every scene compiled before the first frame: a graph with an error fails now, not an hour in.
+    std::vector<Scene> loaded;
+    for (const auto& path : scenes) {
+        Diagnostics diag;
+        auto scene = load_scene(path, diag);
+        if (!scene) {
+            fmt::print(stderr, "{}", diag.format(path));
+            return 1;
+        }
+        loaded.push_back(std::move(*scene));
+    }
+
+    const std::size_t total = scenes.size() * wanted.size() * settings.size();
+    std::size_t done = 0;
+    const auto started = std::chrono::steady_clock::now();
+    auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+    for (const Scene& scene : loaded) {
+        SceneSettings scene_settings = scene.ir->scene;
+        HeadPose start{};
+        for (const auto& v : make_bench_views(*scene.twin, scene_settings))
+            if (v.name == "filled") start = v.head;
+        auto traces = make_head_traces(*scene.twin, scene_settings, locomotion_settings(scene_settings.locomotion),
+                                       start, frames);
+        std::erase_if(traces, [&](const HeadTrace& t) { return std::find(wanted.begin(), wanted.end(), t.name) == wanted.end(); });
+        if (report.traces.empty())
+            for (const auto& t : traces) report.traces.emplace_back(t.name, t.motion);
+
+        StereoSettings stereo;
+        stereo.world_scale = scene_settings.world_scale;
+        const GpuScene gpu_scene = make_gpu_scene(scene.pack.manifest.scene);
+        HeadlessRenderer reference(ctx, scene.pack, reference_settings(size), stereo);
+        const double half_diagonal = reference.views().pixel_half_diagonal;
+        std::vector<std::unique_ptr<SettingRenderers>> renderers(settings.size());
+        std::vector<std::string> broken(settings.size());   // a setting whose renderers cannot be made
+        for (const auto& trace : traces) {
+            const double ref_started = elapsed_s();
+            reference.set_world_scale(trace.world_scale);
+            std::vector<ReferenceFrame> refs(trace.frames.size());
+            for (std::size_t i = 0; i < trace.frames.size(); ++i) {
+                const TraceFrame& tf = trace.frames[i];
+                if (tf.brightness <= 0.0) continue;
+                set_brightness(reference, gpu_scene, tf.brightness);
+                RenderedFrame frame = reference.render(tf.head, tf.time, static_cast<std::uint32_t>(i));
+                refs[i] = {std::move(frame.left), std::move(frame.right),
+                           std::vector<double>(frame.depth_left.begin(), frame.depth_left.end()),
+                           std::vector<double>(frame.depth_right.begin(), frame.depth_right.end())};
+            }
+            const ReferenceFrame& first = refs.front();
+            if (!first.left.pixels.empty() && !refs.back().left.pixels.empty())
+                write_png((std::filesystem::path(o.out) / fmt::format("trace_{}_{}.png", scene.name, trace.name)).string(),
+                          side_by_side(first.left, refs.back().left));
+            fmt::print("{} {}: reference of {} frames in {}\n", scene.name, trace.name, trace.frames.size(),
+                       minutes(elapsed_s() - ref_started));
+
+            for (std::size_t s = 0; s < settings.size(); ++s) {
+                SequenceRow row;
+                row.scene = scene.name;
+                row.trace = trace.name;
+                row.setting = settings[s];
+                try {
+                    if (!broken[s].empty()) throw std::runtime_error(broken[s]);
+                    if (!renderers[s]) {
+                        try {
+                            renderers[s] = std::make_unique<SettingRenderers>(ctx, scene.pack, settings[s].frame, stereo);
+                        } catch (const std::exception& e) {
+                            broken[s] = e.what();
+                            throw;
+                        }
+                    }
+                    fly(*renderers[s], trace, refs, half_diagonal, gpu_scene, count_every, row);
+                } catch (const std::exception& e) {
+                    row.error = e.what();
+                }
+                row.summarize();
+                ++done;
+                const double left = elapsed_s() / static_cast<double>(done) * static_cast<double>(total - done);
+                fmt::print("[{:>3}/{}] {:<10} {:<11} {:<50} {}  (about {} left)\n", done, total, scene.name, trace.name,
+                           settings[s].name(), row.error.empty() ? row.brief() : "error: " + row.error, minutes(left));
+                std::fflush(stdout);   // progress, even into a pipe or a log file
+                report.rows.push_back(std::move(row));
+            }
+        }
+    }
+    report.wall_s = elapsed_s();
+    report.load_end = load_average();
+    report.fill_speedups();
+    report.write(o.out);
+    if (o.plots) report.plot(o.out);
+    fmt::print("results: {}/sequence.md, sequence.csv, sequence_frames.csv ({})\n", o.out, minutes(report.wall_s));
+    fmt::print("{}", report.headline());
+    return 0;
+}
+
+}  // namespace fg::bench
