@@ -20,7 +20,8 @@ glm::dvec3 forward_of(const HeadPose& head) { return -(glm::mat3_cast(head.orien
 // `start` turned by `yaw` about the scene's up (positive: left), then pitched by `pitch` about the
 // head's own right axis (positive: up), as a neck does.
 glm::dquat turned(const HeadPose& start, const glm::dvec3& up, double yaw, double pitch) {
-    return glm::normalize(glm::angleAxis(yaw, up) * start.orientation * glm::angleAxis(pitch, glm::dvec3(1.0, 0.0, 0.0)));
+    return glm::normalize(glm::angleAxis(yaw, up) * start.orientation *
+                          glm::angleAxis(pitch, glm::dvec3(1.0, 0.0, 0.0)));
 }
 
 HeadTrace trace(std::string name, std::string motion, double world_scale, int frames,
@@ -38,7 +39,8 @@ HeadTrace trace(std::string name, std::string motion, double world_scale, int fr
 HeadTrace look_around(const HeadPose& start, const glm::dvec3& up, double world_scale, int frames) {
     const double radius = 15.0 * kDegree, omega = 60.0 * kDegree / radius;
     return trace("look_around", "gaze circling 15° about the start at 60°/s", world_scale, frames, [&](int, double t) {
-        return TraceFrame{{start.position, turned(start, up, radius * std::sin(omega * t), -radius * (1.0 - std::cos(omega * t)))}};
+        return TraceFrame{
+            {start.position, turned(start, up, radius * std::sin(omega * t), -radius * (1.0 - std::cos(omega * t)))}};
     });
 }
 
@@ -73,8 +75,8 @@ HeadTrace walk(const CpuEvaluator& twin, const SceneSettings& s, const Locomotio
 
 // Controller flight along the start's gaze at full throttle, the gallery's speed rule and
 // collision bound (locomotion.h), the probes answered at once by the CPU twin.
-HeadTrace flight(const CpuEvaluator& twin, const SceneSettings& s, const LocomotionSettings& loco, const HeadPose& start,
-                 int frames) {
+HeadTrace flight(const CpuEvaluator& twin, const SceneSettings& s, const LocomotionSettings& loco,
+                 const HeadPose& start, int frames) {
     Locomotion locomotion(loco, s.world_scale);
     const glm::dvec3 direction = forward_of(start);
     glm::dvec3 head = start.position;

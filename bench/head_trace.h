@@ -17,13 +17,13 @@ inline constexpr double kHeadsetHz = 90.0;
 
 struct TraceFrame {
     HeadPose head;
-    double time = 0.0;          // seconds since the trace began; also the scene's time
-    double brightness = 1.0;    // a snap turn's fade; at 0 the frame renders nothing (as in `fgplay xr`)
+    double time = 0.0;         // seconds since the trace began; also the scene's time
+    double brightness = 1.0;   // a snap turn's fade; at 0 the frame renders nothing (as in `fgplay xr`)
 };
 
 struct HeadTrace {
-    std::string name;           // look_around, walk, fast_turn, flight, snap_turn
-    std::string motion;         // what the head does, for the report
+    std::string name;     // look_around, walk, fast_turn, flight, snap_turn
+    std::string motion;   // what the head does, for the report
     double world_scale = 1.0;
     std::vector<TraceFrame> frames;
 };

@@ -14,8 +14,8 @@ namespace fg::bench {
 
 struct SequenceFrame {
     int index = 0;
-    bool dark = false;                     // brightness 0: nothing rendered, nothing measured
-    double gpu_ms = 0.0;                   // FrameStats.gpu_ms "frame" of the timed renderer
+    bool dark = false;     // brightness 0: nothing rendered, nothing measured
+    double gpu_ms = 0.0;   // FrameStats.gpu_ms "frame" of the timed renderer
     double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
     std::size_t not_finite = 0;
     double evaluations_per_pixel = -1.0;   // from the counting renderer; < 0 on frames it skipped

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 
@@ -61,8 +62,8 @@ std::optional<Scene> load_scene(const std::string& path, Diagnostics& diag) {
     if (!pack) return std::nullopt;
     auto ir = load_and_lower(pack->graph, NodeLibrary::builtin(), diag);
     if (!ir) return std::nullopt;
-    Scene scene{std::filesystem::path(path).stem().string(), std::move(*pack), std::make_unique<IrGraph>(std::move(*ir)),
-                std::nullopt};
+    Scene scene{std::filesystem::path(path).stem().string(), std::move(*pack),
+                std::make_unique<IrGraph>(std::move(*ir)), std::nullopt};
     scene.twin = CpuEvaluator::create(*scene.ir, diag);   // the traces need it: a scene without one is refused
     if (!scene.twin) return std::nullopt;
     return scene;
@@ -86,7 +87,8 @@ struct SettingRenderers {
     std::unique_ptr<HeadlessRenderer> timed, counting;
     std::vector<std::uint8_t> seen_left, seen_right;   // empty: every pixel (no lens mask)
 
-    SettingRenderers(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame, const StereoSettings& stereo) {
+    SettingRenderers(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame,
+                     const StereoSettings& stereo) {
         timed = std::make_unique<HeadlessRenderer>(ctx, pack, frame, stereo);
         FrameSettings counted = frame;
         counted.count_evaluations = true;
@@ -110,39 +112,41 @@ void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel
     out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
 }
 
-// One setting through one trace: a warm-up frame, then every frame in order on the timed renderer,
-// every `count_every`-th also on the counting one. Dark frames are skipped by both, as a headset would.
-void fly(SettingRenderers& r, const HeadTrace& trace, const std::vector<ReferenceFrame>& refs, double pixel_half_diagonal,
-         const GpuScene& scene, int count_every, SequenceRow& row) {
+// Before a trace: the trace's world scale, and one untimed frame so pipelines and caches are warm.
+void warm_up(SettingRenderers& r, const HeadTrace& trace, const GpuScene& scene) {
     r.timed->set_world_scale(trace.world_scale);
     r.counting->set_world_scale(trace.world_scale);
     set_brightness(*r.timed, scene, 1.0);
-    r.timed->render(trace.frames.front().head, trace.frames.front().time, 0);   // pipelines and caches warm
-    for (std::size_t i = 0; i < trace.frames.size(); ++i) {
-        const TraceFrame& tf = trace.frames[i];
-        SequenceFrame f;
-        f.index = static_cast<int>(i);
-        f.dark = tf.brightness <= 0.0;
-        if (!f.dark) {
-            const auto index = static_cast<std::uint32_t>(i);
-            set_brightness(*r.timed, scene, tf.brightness);
-            RenderedFrame frame = r.timed->render(tf.head, tf.time, index);
-            f.gpu_ms = frame.stats.gpu_ms.count("frame") ? frame.stats.gpu_ms.at("frame") : 0.0;
-            compare(frame, refs[i], pixel_half_diagonal, r, f);
-            if (i % static_cast<std::size_t>(count_every) == 0) {
-                set_brightness(*r.counting, scene, tf.brightness);
-                FrameStats counted = r.counting->render(tf.head, tf.time, index).stats;
-                f.evaluations_per_pixel = counted.evaluations_per_pixel;
-                if (row.counter_groups.empty())
-                    for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
-                for (const auto& [group, lanes] : counted.lanes) {
-                    row.lanes[group].busy += lanes.busy;
-                    row.lanes[group].total += lanes.total;
-                }
+    r.timed->render(trace.frames.front().head, trace.frames.front().time, 0);
+}
+
+// Frame `i` of a trace on one setting's timed renderer and, every `count_every`-th frame, its counting
+// one. A dark frame renders nothing on either, as on a headset.
+void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame& ref,
+                  double pixel_half_diagonal, const GpuScene& scene, int count_every, SequenceRow& row) {
+    const TraceFrame& tf = trace.frames[i];
+    SequenceFrame f;
+    f.index = static_cast<int>(i);
+    f.dark = tf.brightness <= 0.0;
+    if (!f.dark) {
+        const auto index = static_cast<std::uint32_t>(i);
+        set_brightness(*r.timed, scene, tf.brightness);
+        RenderedFrame frame = r.timed->render(tf.head, tf.time, index);
+        f.gpu_ms = frame.stats.gpu_ms.count("frame") ? frame.stats.gpu_ms.at("frame") : 0.0;
+        compare(frame, ref, pixel_half_diagonal, r, f);
+        if (i % static_cast<std::size_t>(count_every) == 0) {
+            set_brightness(*r.counting, scene, tf.brightness);
+            FrameStats counted = r.counting->render(tf.head, tf.time, index).stats;
+            f.evaluations_per_pixel = counted.evaluations_per_pixel;
+            if (row.counter_groups.empty())
+                for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
+            for (const auto& [group, lanes] : counted.lanes) {
+                row.lanes[group].busy += lanes.busy;
+                row.lanes[group].total += lanes.total;
             }
         }
-        row.frames.push_back(f);
     }
+    row.frames.push_back(f);
 }
 
 double load_average() {
@@ -166,7 +170,8 @@ int run_sequence_bench(const BenchOptions& o) {
     const auto& known = head_trace_names();
     for (const auto& t : o.traces)
         if (std::find(known.begin(), known.end(), t) == known.end()) {
-            fmt::print(stderr, "fgplay bench --sequence: no trace '{}'; the traces are {}\n", t, fmt::join(known, ", "));
+            fmt::print(stderr, "fgplay bench --sequence: no trace '{}'; the traces are {}\n", t,
+                       fmt::join(known, ", "));
             return 2;
         }
     std::vector<std::string> scenes = o.scenes;
@@ -187,9 +192,10 @@ int run_sequence_bench(const BenchOptions& o) {
     report.frames = frames;
     report.count_every = count_every;
     report.load_start = load_average();
-    fmt::print("sequence benchmark on {}: {} scenes x {} traces x {} settings, {}x{} per eye, {} frames per trace at "
-               "{:g} Hz\n",
-               ctx.device_name(), scenes.size(), wanted.size(), settings.size(), size, size, frames, kHeadsetHz);
+    fmt::print(
+        "sequence benchmark on {}: {} scenes x {} traces x {} settings, {}x{} per eye, {} frames per trace at "
+        "{:g} Hz\n",
+        ctx.device_name(), scenes.size(), wanted.size(), settings.size(), size, size, frames, kHeadsetHz);
     if (!ctx.timestamps_supported()) fmt::print("note: no GPU timestamps on this device; times are missing\n");
 
     // Every scene compiled before the first frame: a graph with an error fails now, not an hour in.
@@ -204,10 +210,14 @@ int run_sequence_bench(const BenchOptions& o) {
         loaded.push_back(std::move(*scene));
     }
 
-    const std::size_t total = scenes.size() * wanted.size() * settings.size();
+    // Work is counted in trace frames: each one rendered by the reference and by every setting.
+    const std::size_t total = loaded.size() * wanted.size() * static_cast<std::size_t>(frames);
     std::size_t done = 0;
     const auto started = std::chrono::steady_clock::now();
     auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+    auto time_left = [&] {
+        return minutes(elapsed_s() / static_cast<double>(done) * static_cast<double>(total - done));
+    };
     for (const Scene& scene : loaded) {
         SceneSettings scene_settings = scene.ir->scene;
         HeadPose start{};
@@ -215,7 +225,9 @@ int run_sequence_bench(const BenchOptions& o) {
             if (v.name == "filled") start = v.head;
         auto traces = make_head_traces(*scene.twin, scene_settings, locomotion_settings(scene_settings.locomotion),
                                        start, frames);
-        std::erase_if(traces, [&](const HeadTrace& t) { return std::find(wanted.begin(), wanted.end(), t.name) == wanted.end(); });
+        std::erase_if(traces, [&](const HeadTrace& t) {
+            return std::find(wanted.begin(), wanted.end(), t.name) == wanted.end();
+        });
         if (report.traces.empty())
             for (const auto& t : traces) report.traces.emplace_back(t.name, t.motion);
 
@@ -225,7 +237,14 @@ int run_sequence_bench(const BenchOptions& o) {
         HeadlessRenderer reference(ctx, scene.pack, reference_settings(size), stereo);
         const double half_diagonal = reference.views().pixel_half_diagonal;
         std::vector<std::unique_ptr<SettingRenderers>> renderers(settings.size());
-        std::vector<std::string> broken(settings.size());   // a setting whose renderers cannot be made
+        std::vector<std::string> broken(settings.size());   // why a setting's renderers could not be made
+        for (std::size_t s = 0; s < settings.size(); ++s) {
+            try {
+                renderers[s] = std::make_unique<SettingRenderers>(ctx, scene.pack, settings[s].frame, stereo);
+            } catch (const std::exception& e) {
+                broken[s] = e.what();
+            }
+        }
         for (const auto& trace : traces) {
             const double ref_started = elapsed_s();
             reference.set_world_scale(trace.world_scale);
@@ -241,38 +260,54 @@ int run_sequence_bench(const BenchOptions& o) {
             }
             const ReferenceFrame& first = refs.front();
             if (!first.left.pixels.empty() && !refs.back().left.pixels.empty())
-                write_png((std::filesystem::path(o.out) / fmt::format("trace_{}_{}.png", scene.name, trace.name)).string(),
-                          side_by_side(first.left, refs.back().left));
+                write_png(
+                    (std::filesystem::path(o.out) / fmt::format("trace_{}_{}.png", scene.name, trace.name)).string(),
+                    side_by_side(first.left, refs.back().left));
             fmt::print("{} {}: reference of {} frames in {}\n", scene.name, trace.name, trace.frames.size(),
                        minutes(elapsed_s() - ref_started));
 
+            std::vector<SequenceRow> rows(settings.size());
             for (std::size_t s = 0; s < settings.size(); ++s) {
-                SequenceRow row;
-                row.scene = scene.name;
-                row.trace = trace.name;
-                row.setting = settings[s];
+                rows[s].scene = scene.name;
+                rows[s].trace = trace.name;
+                rows[s].setting = settings[s];
+                rows[s].error = broken[s];
+            }
+            // A setting that fails stops there; the others go on.
+            auto attempt = [&](std::size_t s, const std::function<void()>& work) {
+                if (!rows[s].error.empty()) return;
                 try {
-                    if (!broken[s].empty()) throw std::runtime_error(broken[s]);
-                    if (!renderers[s]) {
-                        try {
-                            renderers[s] = std::make_unique<SettingRenderers>(ctx, scene.pack, settings[s].frame, stereo);
-                        } catch (const std::exception& e) {
-                            broken[s] = e.what();
-                            throw;
-                        }
-                    }
-                    fly(*renderers[s], trace, refs, half_diagonal, gpu_scene, count_every, row);
+                    work();
                 } catch (const std::exception& e) {
-                    row.error = e.what();
+                    rows[s].error = e.what();
                 }
-                row.summarize();
+            };
+            for (std::size_t s = 0; s < settings.size(); ++s)
+                attempt(s, [&] { warm_up(*renderers[s], trace, gpu_scene); });
+            // Each frame goes through every setting before the next frame, starting with another setting
+            // each time: a slow spell of a shared machine falls on all settings alike, not on whichever ran
+            // then. Each renderer still renders the trace's frames in order.
+            for (std::size_t i = 0; i < trace.frames.size(); ++i) {
+                for (std::size_t k = 0; k < settings.size(); ++k) {
+                    const std::size_t s = (i + k) % settings.size();
+                    attempt(s, [&] {
+                        render_frame(*renderers[s], trace, i, refs[i], half_diagonal, gpu_scene, count_every, rows[s]);
+                    });
+                }
                 ++done;
-                const double left = elapsed_s() / static_cast<double>(done) * static_cast<double>(total - done);
-                fmt::print("[{:>3}/{}] {:<10} {:<11} {:<50} {}  (about {} left)\n", done, total, scene.name, trace.name,
-                           settings[s].name(), row.error.empty() ? row.brief() : "error: " + row.error, minutes(left));
-                std::fflush(stdout);   // progress, even into a pipe or a log file
+                if ((i + 1) % 15 == 0 && i + 1 < trace.frames.size()) {
+                    fmt::print("{} {}: frame {}/{}  (about {} left)\n", scene.name, trace.name, i + 1,
+                               trace.frames.size(), time_left());
+                    std::fflush(stdout);   // progress, even into a pipe or a log file
+                }
+            }
+            for (auto& row : rows) {
+                row.summarize();
+                fmt::print("{:<10} {:<11} {:<50} {}  (about {} left)\n", scene.name, trace.name, row.setting.name(),
+                           row.error.empty() ? row.brief() : "error: " + row.error, time_left());
                 report.rows.push_back(std::move(row));
             }
+            std::fflush(stdout);
         }
     }
     report.wall_s = elapsed_s();

@@ -13,13 +13,13 @@ namespace fg::bench {
 
 enum class SequenceBaseline {
     None,
-    Naive,              // naive per-eye sphere tracing: what every speed-up is first measured against
-    NaivePersistent,    // the same with persistent lanes: whether a method beats the better-scheduled naive tracer
+    Naive,             // naive per-eye sphere tracing: what every speed-up is first measured against
+    NaivePersistent,   // the same with persistent lanes: whether a method beats the better-scheduled naive tracer
 };
 
 struct SequenceSetting {
-    std::string method;     // "naive", "naive + persistent lanes", "per-eye", ...
-    std::string pixels;     // kAllPixels or kMaskedPixels
+    std::string method;   // "naive", "naive + persistent lanes", "per-eye", ...
+    std::string pixels;   // kAllPixels or kMaskedPixels
     FrameSettings frame;
     SequenceBaseline baseline = SequenceBaseline::None;
 

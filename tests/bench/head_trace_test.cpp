@@ -73,7 +73,8 @@ TEST_P(HeadTraces, every_trace_has_its_frames_at_90_hz_and_starts_where_the_head
         EXPECT_NEAR(t.frames[1].time - t.frames[0].time, 1.0 / 90.0, 1e-12) << t.name;
         EXPECT_LT(glm::length(t.frames[0].head.position - f.start.position), 1e-9) << t.name;
         for (const auto& fr : t.frames)
-            EXPECT_GT(f.twin->distance(fr.head.position), f.clearance()) << t.name << " takes the head into the surface";
+            EXPECT_GT(f.twin->distance(fr.head.position), f.clearance())
+                << t.name << " takes the head into the surface";
     }
 }
 
@@ -127,8 +128,12 @@ TEST_P(HeadTraces, a_snap_turn_turns_ninety_degrees_in_its_one_black_frame) {
     int black = 0;
     for (std::size_t i = 1; i < snap.frames.size(); ++i) {
         // The turn is about the vertical: compare the gazes' horizontal directions.
-        auto level = [&](const HeadPose& h) { glm::dvec3 g = gaze(h); return glm::normalize(g - up * glm::dot(g, up)); };
-        double turned = std::acos(std::clamp(glm::dot(level(snap.frames[i - 1].head), level(snap.frames[i].head)), -1.0, 1.0));
+        auto level = [&](const HeadPose& h) {
+            glm::dvec3 g = gaze(h);
+            return glm::normalize(g - up * glm::dot(g, up));
+        };
+        double turned =
+            std::acos(std::clamp(glm::dot(level(snap.frames[i - 1].head), level(snap.frames[i].head)), -1.0, 1.0));
         if (snap.frames[i].brightness <= 0.0) {
             ++black;
             EXPECT_NEAR(turned / kDegree, 90.0, 1.0) << "frame " << i;
