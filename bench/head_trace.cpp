@@ -38,10 +38,11 @@ HeadTrace trace(std::string name, std::string motion, double world_scale, int fr
 // The gaze circles 15 degrees around and below the start at a constant 60 degrees a second.
 HeadTrace look_around(const HeadPose& start, const glm::dvec3& up, double world_scale, int frames) {
     const double radius = 15.0 * kDegree, omega = 60.0 * kDegree / radius;
-    return trace("look_around", "gaze circling 15° about the start at 60°/s", world_scale, frames, [&](int, double t) {
-        return TraceFrame{
-            {start.position, turned(start, up, radius * std::sin(omega * t), -radius * (1.0 - std::cos(omega * t)))}};
-    });
+    return trace("look_around", "gaze circling (15° radius, through the start), the head at 60°/s", world_scale, frames,
+                 [&](int, double t) {
+                     return TraceFrame{{start.position, turned(start, up, radius * std::sin(omega * t),
+                                                               -radius * (1.0 - std::cos(omega * t)))}};
+                 });
 }
 
 // The head turns 60 degrees to the left, back through the start and on to the right, passing the

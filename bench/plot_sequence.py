@@ -55,9 +55,9 @@ for trace in traces:
 
 # Bars: median speed-up solid, p99 speed-up hatched beside it, per setting, grouped by trace.
 others = [s for s in settings if s != baseline]
-fig, axes = plt.subplots(1, len(scenes), figsize=(max(6.0, 1.1 * len(traces) * len(others) / 2) * len(scenes) / 1.5, 4.6),
+fig, axes = plt.subplots(len(scenes), 1, figsize=(max(8.0, 0.32 * len(traces) * len(others)) + 3.5, 3.4 * len(scenes)),
                          squeeze=False)
-for ax, scene in zip(axes[0], scenes):
+for ax, scene in zip(axes[:, 0], scenes):
     base = {r["trace"]: r for r in rows if r["scene"] == scene and r["setting"] == baseline}
     width = 0.8 / max(1, 2 * len(others))
     for k, setting in enumerate(others):
@@ -79,7 +79,7 @@ for ax, scene in zip(axes[0], scenes):
     ax.set_ylabel("speed-up over naive on all pixels (×)")
     ax.set_title(scene)
     ax.grid(axis="y", alpha=0.3)
-axes[0][-1].legend(fontsize=5.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+axes[0][0].legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
 fig.tight_layout()
 fig.savefig(folder / "sequence_speedups.png", dpi=100)
 written.append("sequence_speedups.png")
