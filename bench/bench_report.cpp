@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frame/trade_off_front.h"
+#include "plot_script.h"
 
 namespace fg::bench {
 
@@ -137,12 +138,8 @@ void BenchReport::write(const std::string& folder) const {
 }
 
 void BenchReport::plot(const std::string& folder) const {
-    std::string script = std::string(FG_SOURCE_DIR) + "/bench/plot_bench.py";
-    std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    std::string cmd = fmt::format("{} '{}' '{}'", python, script, folder);
-    std::fflush(stdout);
-    if (std::system(cmd.c_str()) != 0)
-        fmt::print("note: plotting failed; run `{}` (needs python3-matplotlib)\n", cmd);
+    if (!run_plot_script("plot_bench.py", folder))
+        fmt::print("note: plotting failed (it needs python3-matplotlib); results.json holds every figure\n");
 }
 
 std::string BenchReport::summary_line() const {

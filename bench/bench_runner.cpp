@@ -19,9 +19,9 @@
 #include "frame/cpu_reference_tracer.h"
 #include "frame/headless_renderer.h"
 #include "frame/lens_mask.h"
+#include "frame/strict_reference.h"
 #include "frame_measures.h"
 #include "pack/pack_reader.h"
-#include "sequence_runner.h"
 #include "vk/context.h"
 
 namespace fg::bench {
@@ -65,7 +65,6 @@ std::optional<CompileFigure> measure_compile(const std::string& path, std::optio
 }  // namespace
 
 int run_bench(const BenchOptions& o) {
-    if (o.sequence) return run_sequence_bench(o);
     // Mesa caches compiled pipelines on disk; a benchmark must not time a warm cache one run and
     // a cold one the next.
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
@@ -149,7 +148,7 @@ int run_bench(const BenchOptions& o) {
             auto it = refs.find(sz);
             if (it != refs.end()) return it->second;
             Reference ref;
-            HeadlessRenderer r(ctx, *pack, reference_settings(sz), stereo);
+            HeadlessRenderer r(ctx, *pack, strict_reference_settings(pack->manifest, sz, sz), stereo);
             ref.frame = r.render(view.head, 0.0);
             ref.views = r.views();
             return refs[sz] = std::move(ref);
@@ -160,7 +159,7 @@ int run_bench(const BenchOptions& o) {
             ReferenceSettings rs;
             rs.epsilon = 0.05;
             rs.max_steps = 4000;
-            rs.step_scale = pack->manifest.find_spec("step_scale")->value;
+            rs.step_scale = 0.5 * pack->manifest.find_spec("step_scale")->value;   // as the strict reference
             double cone = std::tan(ref.views.pixel_half_diagonal);
             for (int k = 0; k < 64; ++k) {
                 std::uint32_t x = rng() % size, y = rng() % size;

@@ -5,15 +5,6 @@
 
 namespace fg::bench {
 
-FrameSettings reference_settings(std::uint32_t size) {
-    FrameSettings f;
-    f.width = f.height = size;
-    f.stereo = StereoMode::Naive;
-    f.foveation = 0.0;
-    f.knobs = {{"epsilon", 0.05}, {"max_steps", 2000}};
-    return f;
-}
-
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());

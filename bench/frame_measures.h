@@ -1,17 +1,13 @@
 #pragma once
-// What both benchmarks measure frames with: the strict reference every setting is judged against,
-// robust statistics of per-frame figures, and the PSNR of an image.
+// What both benchmarks measure frames with: robust statistics of per-frame figures, and the PSNR of
+// an image against the strict reference (frame/strict_reference.h).
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "frame/frame_settings.h"
 #include "frame/image_output.h"
 
 namespace fg::bench {
-
-// The reference: the naive tracer with a tenth of the default epsilon and a generous step cap.
-FrameSettings reference_settings(std::uint32_t size);
 
 double median(std::vector<double> v);
 // Linear interpolation between the closest ranks (numpy's default); 0 for no values.

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "locomotion/locomotion.h"
 #include "locomotion/snap_turn.h"
 
 namespace fg::bench {
@@ -57,13 +58,12 @@ HeadTrace fast_turn(const HeadPose& start, const glm::dvec3& up, double world_sc
 // Walking to the right past the surface the start looks at, level, still looking at it, the head
 // bobbing 2 cm at two steps a second. The walker stops where the next step would bring the head
 // closer to the surface than the head's radius.
-HeadTrace walk(const CpuEvaluator& twin, const SceneSettings& s, const LocomotionSettings& loco, const HeadPose& start,
-               int frames) {
+HeadTrace walk(const CpuEvaluator& twin, const SceneSettings& s, const HeadPose& start, int frames) {
     const glm::dvec3 up = glm::normalize(s.camera.up);
     glm::dvec3 right = glm::mat3_cast(start.orientation)[0];
     right = glm::normalize(right - up * glm::dot(right, up));
     const double speed = 1.4 * s.world_scale, bob = 0.02 * s.world_scale, steps_hz = 2.0;
-    const double clearance = loco.head_radius * s.world_scale;
+    const double clearance = s.locomotion.head_radius * s.world_scale;
     glm::dvec3 path = start.position;   // where the head would be without the bob
     const char* motion = "walking right past the surface at 1.4 m/s, looking at it, 2 cm head bob";
     return trace("walk", motion, s.world_scale, frames, [&](int i, double t) {
@@ -76,9 +76,8 @@ HeadTrace walk(const CpuEvaluator& twin, const SceneSettings& s, const Locomotio
 
 // Controller flight along the start's gaze at full throttle, the gallery's speed rule and
 // collision bound (locomotion.h), the probes answered at once by the CPU twin.
-HeadTrace flight(const CpuEvaluator& twin, const SceneSettings& s, const LocomotionSettings& loco,
-                 const HeadPose& start, int frames) {
-    Locomotion locomotion(loco, s.world_scale);
+HeadTrace flight(const CpuEvaluator& twin, const SceneSettings& s, const HeadPose& start, int frames) {
+    Locomotion locomotion(s.locomotion, s.world_scale);
     const glm::dvec3 direction = forward_of(start);
     glm::dvec3 head = start.position;
     return trace("flight", "controller flight towards the surface at the gallery's speed", s.world_scale, frames,
@@ -115,11 +114,11 @@ const std::vector<std::string>& head_trace_names() {
     return names;
 }
 
-std::vector<HeadTrace> make_head_traces(const CpuEvaluator& twin, const SceneSettings& scene,
-                                        const LocomotionSettings& locomotion, const HeadPose& start, int frames) {
+std::vector<HeadTrace> make_head_traces(const CpuEvaluator& twin, const SceneSettings& scene, const HeadPose& start,
+                                        int frames) {
     const glm::dvec3 up = glm::normalize(scene.camera.up);
-    return {look_around(start, up, scene.world_scale, frames), walk(twin, scene, locomotion, start, frames),
-            fast_turn(start, up, scene.world_scale, frames), flight(twin, scene, locomotion, start, frames),
+    return {look_around(start, up, scene.world_scale, frames), walk(twin, scene, start, frames),
+            fast_turn(start, up, scene.world_scale, frames), flight(twin, scene, start, frames),
             snap_turn(start, up, scene.world_scale, frames)};
 }
 

@@ -9,7 +9,6 @@
 #include "cpu/cpu_evaluator.h"
 #include "frame/stereo_rig.h"
 #include "graph/scene_settings.h"
-#include "locomotion/locomotion.h"
 
 namespace fg::bench {
 
@@ -32,8 +31,9 @@ struct HeadTrace {
 const std::vector<std::string>& head_trace_names();
 
 // `frames` frames of every trace from `start`. The twin keeps the walker and the flight out of the
-// surface and gives the flight its speed (locomotion.h: speed proportional to the distance).
-std::vector<HeadTrace> make_head_traces(const CpuEvaluator& twin, const SceneSettings& scene,
-                                        const LocomotionSettings& locomotion, const HeadPose& start, int frames);
+// surface and gives the flight its speed (the scene's locomotion limits: speed proportional to the
+// distance, runtime/locomotion/locomotion.h).
+std::vector<HeadTrace> make_head_traces(const CpuEvaluator& twin, const SceneSettings& scene, const HeadPose& start,
+                                        int frames);
 
 }  // namespace fg::bench

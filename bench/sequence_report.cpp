@@ -12,6 +12,7 @@
 
 #include "frame_measures.h"
 #include "head_trace.h"
+#include "plot_script.h"
 
 namespace fg::bench {
 
@@ -161,8 +162,8 @@ void SequenceReport::write(const std::string& folder) const {
         "trace, the settings taking turns frame by frame; median, 99th percentile and worst over the frames "
         "rendered. Evaluations per pixel and "
         "SIMD lanes busy come from a separate counting renderer every {} frames (counting costs "
-        "atomics, so it is never the timed one). Errors are against a strict reference of every frame "
-        "(naive, epsilon 0.05, 2000 steps), mean and worst frame. Speed-ups (×) are the baseline's time "
+        "atomics, so it is never the timed one). Errors are against the strict reference of every frame "
+        "(naive, a tenth of the hit threshold, half steps, 4000 steps), mean and worst frame. Speed-ups (×) are the baseline's time "
         "over the setting's, same scene, trace and pixel set, same run.\n\n",
         kHeadsetHz, device, size, size, frames, count_every);
     if (load_start >= 0.0)
@@ -232,11 +233,9 @@ void SequenceReport::write(const std::string& folder) const {
 }
 
 void SequenceReport::plot(const std::string& folder) const {
-    std::string script = std::string(FG_SOURCE_DIR) + "/bench/plot_sequence.py";
-    std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    std::string cmd = fmt::format("{} '{}' '{}'", python, script, folder);
-    std::fflush(stdout);
-    if (std::system(cmd.c_str()) != 0) fmt::print("note: plotting failed; run `{}` (needs python3-matplotlib)\n", cmd);
+    if (!run_plot_script("plot_sequence.py", folder))
+        fmt::print("note: plotting failed (it needs python3-matplotlib); sequence.csv and sequence_frames.csv hold "
+                   "every figure\n");
 }
 
 std::string SequenceReport::headline() const {

@@ -12,17 +12,23 @@
 #include <memory>
 
 #include "bench_views.h"
+#include "common/embedded_file.h"
 #include "compiler.h"
 #include "frame/accuracy_metrics.h"
 #include "frame/gpu_uniforms.h"
 #include "frame/headless_renderer.h"
 #include "frame/lens_mask.h"
+#include "frame/strict_reference.h"
 #include "frame_measures.h"
 #include "head_trace.h"
 #include "pack/pack_reader.h"
 #include "sequence_report.h"
 #include "sequence_settings.h"
 #include "vk/context.h"
+
+namespace fg {
+std::span<const EmbeddedFile> embedded_sequence_scenes();   // generated (bench/fg_bench.cmake)
+}
 
 namespace fg::bench {
 
@@ -31,10 +37,18 @@ namespace {
 // Counting evaluations takes a frame of its own; one frame in six samples a 90-frame trace 15 times.
 constexpr int kCountEvery = 6, kQuickCountEvery = 4;
 
-std::vector<std::string> default_scenes(bool quick) {
-    const std::string gallery = std::string(FG_SOURCE_DIR) + "/graphs/gallery/";
-    if (quick) return {gallery + "mandelbulb.json"};
-    return {gallery + "mandelbulb.json", gallery + "mandelbox.json", gallery + "kleinian.json"};
+// A scene to fly: a graph file or a pack file, or a gallery graph carried inside the binary.
+struct SceneSource {
+    std::string name, path;   // path empty: `graph_text` is the graph
+    std::string graph_text;
+};
+
+std::vector<SceneSource> default_scenes(bool quick) {
+    std::vector<SceneSource> out;
+    for (std::string name : {"mandelbulb", "mandelbox", "kleinian"})
+        for (const auto& f : embedded_sequence_scenes())
+            if (f.path == name + ".json" && !(quick && !out.empty())) out.push_back({name, "", std::string(f.text)});
+    return out;
 }
 
 // A scene ready to fly: its pack, compiled once, and its CPU twin (which reads the IR it was made from).
@@ -45,25 +59,27 @@ struct Scene {
     std::optional<CpuEvaluator> twin;
 };
 
-std::optional<Scene> load_scene(const std::string& path, Diagnostics& diag) {
+std::optional<Scene> load_scene(const SceneSource& source, Diagnostics& diag) {
     std::optional<Pack> pack;
-    if (std::filesystem::path(path).extension() == ".fgpack") {
-        pack = read_pack_file(path, diag);
+    if (std::filesystem::path(source.path).extension() == ".fgpack") {
+        pack = read_pack_file(source.path, diag);
     } else {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) {
-            diag.error(fmt::format("cannot read {}", path));
-            return std::nullopt;
+        std::string text = source.graph_text;
+        if (!source.path.empty()) {
+            std::ifstream in(source.path, std::ios::binary);
+            if (!in) {
+                diag.error(fmt::format("cannot read {}", source.path));
+                return std::nullopt;
+            }
+            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
         }
-        std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         auto compiled = compile_graph(text, NodeLibrary::builtin(), {}, diag);
         if (compiled) pack = read_pack(pack_bytes(*compiled), diag);
     }
     if (!pack) return std::nullopt;
     auto ir = load_and_lower(pack->graph, NodeLibrary::builtin(), diag);
     if (!ir) return std::nullopt;
-    Scene scene{std::filesystem::path(path).stem().string(), std::move(*pack),
-                std::make_unique<IrGraph>(std::move(*ir)), std::nullopt};
+    Scene scene{source.name, std::move(*pack), std::make_unique<IrGraph>(std::move(*ir)), std::nullopt};
     scene.twin = CpuEvaluator::create(*scene.ir, diag);   // the traces need it: a scene without one is refused
     if (!scene.twin) return std::nullopt;
     return scene;
@@ -78,7 +94,7 @@ struct ReferenceFrame {
 // A snap turn's fade as `fgplay xr` applies it: the last pass scales the image.
 void set_brightness(HeadlessRenderer& renderer, const GpuScene& scene, double brightness) {
     GpuScene faded = scene;
-    faded.misc2[1] = static_cast<float>(1.0 - brightness);
+    faded.fade = static_cast<float>(1.0 - brightness);
     renderer.executor().set_scene(faded);
 }
 
@@ -174,9 +190,10 @@ int run_sequence_bench(const BenchOptions& o) {
                        fmt::join(known, ", "));
             return 2;
         }
-    std::vector<std::string> scenes = o.scenes;
+    std::vector<SceneSource> scenes;
+    for (const auto& given : o.scenes) scenes.push_back({std::filesystem::path(given).stem().string(), given, ""});
     for (const auto& given : {o.pack, o.graph})
-        if (!given.empty()) scenes.push_back(given);
+        if (!given.empty()) scenes.push_back({std::filesystem::path(given).stem().string(), given, ""});
     if (scenes.empty()) scenes = default_scenes(o.quick);
     const std::vector<std::string> wanted = o.traces.empty() ? known : o.traces;
     std::filesystem::create_directories(o.out);
@@ -200,11 +217,11 @@ int run_sequence_bench(const BenchOptions& o) {
 
     // Every scene compiled before the first frame: a graph with an error fails now, not an hour in.
     std::vector<Scene> loaded;
-    for (const auto& path : scenes) {
+    for (const auto& source : scenes) {
         Diagnostics diag;
-        auto scene = load_scene(path, diag);
+        auto scene = load_scene(source, diag);
         if (!scene) {
-            fmt::print(stderr, "{}", diag.format(path));
+            fmt::print(stderr, "{}", diag.format(source.path.empty() ? source.name : source.path));
             return 1;
         }
         loaded.push_back(std::move(*scene));
@@ -223,8 +240,7 @@ int run_sequence_bench(const BenchOptions& o) {
         HeadPose start{};
         for (const auto& v : make_bench_views(*scene.twin, scene_settings))
             if (v.name == "filled") start = v.head;
-        auto traces = make_head_traces(*scene.twin, scene_settings, locomotion_settings(scene_settings.locomotion),
-                                       start, frames);
+        auto traces = make_head_traces(*scene.twin, scene_settings, start, frames);
         std::erase_if(traces, [&](const HeadTrace& t) {
             return std::find(wanted.begin(), wanted.end(), t.name) == wanted.end();
         });
@@ -234,7 +250,7 @@ int run_sequence_bench(const BenchOptions& o) {
         StereoSettings stereo;
         stereo.world_scale = scene_settings.world_scale;
         const GpuScene gpu_scene = make_gpu_scene(scene.pack.manifest.scene);
-        HeadlessRenderer reference(ctx, scene.pack, reference_settings(size), stereo);
+        HeadlessRenderer reference(ctx, scene.pack, strict_reference_settings(scene.pack.manifest, size, size), stereo);
         const double half_diagonal = reference.views().pixel_half_diagonal;
         std::vector<std::unique_ptr<SettingRenderers>> renderers(settings.size());
         std::vector<std::string> broken(settings.size());   // why a setting's renderers could not be made

@@ -150,7 +150,7 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
         m.lipschitz_notes.push_back(fmt::format("step factor {:g} from the graph (fgc calibrate): step scale {:g}",
                                                 ir->scene.step_factor, ir->scene.step_factor / result.lipschitz.bound));
     m.period = analyse_periodicity(*ir).period;
-    m.scene = scene_settings_to_json(ir->scene);
+    m.scene = ir->scene;
     m.precision = ir->scene.double_precision ? "double" : "float";
     {
         std::vector<ValueType> types;

@@ -150,7 +150,7 @@ std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
         case IrInput::Kind::Implicit:
             switch (in.implicit) {
                 case ImplicitSource::Position: v = "p"; break;
-                case ImplicitSource::Time: v = in_precision("fg_frame.time.x", ValueType::Float); break;
+                case ImplicitSource::Time: v = in_precision("fg_frame.seconds", ValueType::Float); break;
                 case ImplicitSource::Light: v = in_precision("fg_scene.light_dir.xyz", ValueType::Vec3); break;
                 case ImplicitSource::ToCamera: v = in_precision(shading ? "fg_to_camera" : "vec3(0.0)", ValueType::Vec3); break;
                 case ImplicitSource::Normal: v = in_precision(shading ? "fg_normal" : "vec3(0.0)", ValueType::Vec3); break;

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/json_fields.h"
 #include "identifiers.h"
 #include "json_text.h"
 #include "literal.h"
@@ -26,23 +27,16 @@ std::string join(const std::vector<std::string>& xs) {
 
 class GraphReader {
 public:
-    GraphReader(const NodeLibrary& lib, Diagnostics& diag) : lib_(lib), diag_(diag) {}
+    GraphReader(const NodeLibrary& lib, Diagnostics& diag) : lib_(lib), diag_(diag), fields_(diag) {}
 
     std::optional<Graph> read(const json& doc) {
         Graph g;
         g.source = doc;
-        static const std::set<std::string> known{"format", "version", "name", "description", "params",
-                                                 "nodes", "outputs", "scene", "comment", "ui"};
-        for (auto it = doc.begin(); it != doc.end(); ++it)
-            if (!known.count(it.key())) diag_.error(fmt::format("unknown top-level field \"{}\"", it.key()), "/" + it.key());
-        if (doc.contains("name")) {
-            if (doc["name"].is_string()) g.name = doc["name"].get<std::string>();
-            else diag_.error("\"name\" must be a string", "/name");
-        }
-        if (doc.contains("description")) {
-            if (doc["description"].is_string()) g.description = doc["description"].get<std::string>();
-            else diag_.error("\"description\" must be a string", "/description");
-        }
+        fields_.unknown_keys(doc, "", {"format", "version", "name", "description", "params", "nodes", "outputs", "scene",
+                                       "comment", "ui"},
+                             "top-level field");
+        fields_.optional(doc, "name", "", g.name);
+        fields_.optional(doc, "description", "", g.description);
         read_params(doc, g);
         read_nodes(doc, g);
         read_outputs(doc, g);
@@ -56,14 +50,19 @@ public:
 private:
     const NodeLibrary& lib_;
     Diagnostics& diag_;
+    JsonFieldReader fields_;
+
+    // The fields of node `id`: its problems carry the node's id.
+    JsonFieldReader node_fields(const std::string& id) {
+        return JsonFieldReader([this, id](const std::string& message, const std::string& pointer) {
+            diag_.error(message, pointer, id);
+        });
+    }
 
     void read_params(const json& doc, Graph& g) {
-        if (!doc.contains("params")) return;
-        const json& ps = doc["params"];
-        if (!ps.is_object()) {
-            diag_.error("\"params\" is an object of name -> {type, default, min, max}", "/params");
-            return;
-        }
+        const json* params = fields_.object_field(doc, "params", "");
+        if (!params) return;
+        const json& ps = *params;
         for (auto it = ps.begin(); it != ps.end(); ++it) {
             std::string ptr = "/params/" + it.key();
             ParamDecl p;
@@ -77,31 +76,13 @@ private:
                 continue;
             }
             const json& pj = it.value();
-            if (!pj.is_object()) {
-                diag_.error("a parameter is an object {type, default, min, max, doc}", ptr);
-                continue;
-            }
-            static const std::set<std::string> known{"type", "default", "min", "max", "doc"};
-            for (auto k = pj.begin(); k != pj.end(); ++k)
-                if (!known.count(k.key())) diag_.error(fmt::format("unknown field \"{}\"", k.key()), ptr + "/" + k.key());
-            if (!pj.contains("type") || !pj["type"].is_string() || !parse_type(pj["type"].get<std::string>())) {
-                diag_.error("parameter needs \"type\": one of float, int, bool, vec2, vec3, vec4", ptr + "/type");
-                continue;
-            }
-            p.type = *parse_type(pj["type"].get<std::string>());
-            for (const char* bound : {"min", "max"}) {
-                if (!pj.contains(bound)) continue;
-                if (!pj[bound].is_number() || !std::isfinite(pj[bound].get<double>())) {
-                    diag_.error("expected a finite number", ptr + "/" + bound);
-                    continue;
-                }
-                (bound == std::string("min") ? p.min : p.max) = pj[bound].get<double>();
-            }
+            if (!fields_.is_object(pj, ptr)) continue;
+            fields_.unknown_keys(pj, ptr, {"type", "default", "min", "max", "doc"});
+            if (!fields_.required(pj, "type", ptr, p.type)) continue;
+            for (const char* bound : {"min", "max"})
+                if (double x = 0.0; fields_.optional(pj, bound, ptr, x)) (bound == std::string("min") ? p.min : p.max) = x;
             if (p.min && p.max && *p.min > *p.max) diag_.error("min is greater than max", ptr + "/min");
-            if (pj.contains("doc")) {
-                if (pj["doc"].is_string()) p.doc = pj["doc"].get<std::string>();
-                else diag_.error("\"doc\" must be a string", ptr + "/doc");
-            }
+            fields_.optional(pj, "doc", ptr, p.doc);
             if (!pj.contains("default")) {
                 diag_.error("parameter needs a \"default\" value", ptr);
                 continue;
@@ -139,10 +120,7 @@ private:
         if (j.is_object()) {
             if (j.contains("node") && j["node"].is_string()) {
                 auto r = from_reference(j["node"].get<std::string>());
-                if (r && j.contains("port")) {
-                    if (j["port"].is_string()) r->port = j["port"].get<std::string>();
-                    else diag_.error("\"port\" must be a string", ptr + "/port", node_id);
-                }
+                if (r) node_fields(node_id).optional(j, "port", ptr, r->port);
                 return r;
             }
             if (j.contains("param") && j["param"].is_string()) {
@@ -168,22 +146,22 @@ private:
     std::optional<CustomCode> read_custom(const json& nj, const std::string& ptr, const std::string& id) {
         CustomCode c;
         auto report = [&](const std::string& m, const std::string& at) { diag_.error(m, at, id); };
-        if (!nj.contains("ports") || !nj["ports"].is_object()) {
-            diag_.error("a custom.glsl node declares \"ports\": {\"inputs\": [...], \"outputs\": [...]}", ptr, id);
+        JsonFieldReader fields = node_fields(id);
+        if (!nj.contains("ports")) {
+            report("a custom.glsl node declares \"ports\": {\"inputs\": [...], \"outputs\": [...]}", ptr);
             return std::nullopt;
         }
-        const auto& ports = nj["ports"];
+        const json* ports = fields.object_field(nj, "ports", ptr);
+        if (!ports) return std::nullopt;
+        fields.unknown_keys(*ports, ptr + "/ports", {"inputs", "outputs"});
         std::set<std::string> names;
         for (const char* side : {"inputs", "outputs"}) {
             bool is_input = side == std::string("inputs");
-            if (!ports.contains(side)) continue;
-            if (!ports[side].is_array()) {
-                report(fmt::format("\"{}\" is an array of ports", side), ptr + "/ports/" + side);
-                continue;
-            }
-            for (std::size_t i = 0; i < ports[side].size(); ++i) {
+            const json* list = fields.array_field(*ports, side, ptr + "/ports");
+            if (!list) continue;
+            for (std::size_t i = 0; i < list->size(); ++i) {
                 std::string pp = fmt::format("{}/ports/{}/{}", ptr, side, i);
-                auto p = read_port_definition(ports[side][i], pp, is_input, false, false, report);
+                auto p = read_port_definition((*list)[i], pp, is_input, false, false, report);
                 if (!p) continue;
                 if (!names.insert(p->name).second) report(fmt::format("port \"{}\" declared twice", p->name), pp);
                 if (!p->knob.empty()) report("custom nodes have no knobs", pp + "/knob");
@@ -197,12 +175,10 @@ private:
         } else if (nj["code"].is_string()) {
             c.code = nj["code"].get<std::string>();
         } else if (nj["code"].is_array()) {
-            for (std::size_t i = 0; i < nj["code"].size(); ++i) {
-                if (!nj["code"][i].is_string()) report("code lines are strings", fmt::format("{}/code/{}", ptr, i));
-                else c.code += nj["code"][i].get<std::string>() + "\n";
-            }
+            for (std::size_t i = 0; i < nj["code"].size(); ++i)
+                if (std::string line; fields.read(nj["code"][i], fmt::format("{}/code/{}", ptr, i), line)) c.code += line + "\n";
         } else {
-            report("\"code\" is a string or an array of lines", ptr + "/code");
+            report(fmt::format("expected a string or an array of lines, got {}", json_kind(nj["code"])), ptr + "/code");
         }
         // Guard against code that would break out of the generated function.
         int depth = 0;
@@ -215,9 +191,8 @@ private:
             report("a custom.glsl node must declare its Lipschitz bound: \"lipschitz\": 1.0 (a factor) or a rule such "
                    "as \"L(p) * 2\"",
                    ptr);
-        } else if (nj["lipschitz"].is_number()) {
-            double k = nj["lipschitz"].get<double>();
-            if (!std::isfinite(k) || k <= 0) report("the Lipschitz factor must be a positive number", ptr + "/lipschitz");
+        } else if (double k = 1.0; nj["lipschitz"].is_number()) {
+            fields.read(nj["lipschitz"], ptr + "/lipschitz", k, NumberRange::positive());
             // A factor k means: every output changes at most k times as fast as the fastest input.
             std::string rule = "0";
             for (const auto& in : c.inputs) rule = fmt::format("max({}, L({}))", rule, in.name);
@@ -225,7 +200,8 @@ private:
         } else if (nj["lipschitz"].is_string()) {
             c.lipschitz = nj["lipschitz"].get<std::string>();
         } else {
-            report("\"lipschitz\" is a number (factor) or a rule string", ptr + "/lipschitz");
+            report(fmt::format("expected a number (a factor) or a rule string, got {}", json_kind(nj["lipschitz"])),
+                   ptr + "/lipschitz");
         }
         return c;
     }
@@ -235,26 +211,17 @@ private:
             diag_.error("missing \"nodes\": the graph has no nodes", "");
             return;
         }
-        const json& ns = doc["nodes"];
-        if (!ns.is_array()) {
-            diag_.error("\"nodes\" is an array", "/nodes");
-            return;
-        }
+        const json* nodes = fields_.array_field(doc, "nodes", "");
+        if (!nodes) return;
+        const json& ns = *nodes;
         std::set<std::string> ids;
         for (std::size_t i = 0; i < ns.size(); ++i) {
             std::string ptr = fmt::format("/nodes/{}", i);
             const json& nj = ns[i];
-            if (!nj.is_object()) {
-                diag_.error("a node is an object with \"id\" and \"type\"", ptr);
-                continue;
-            }
+            if (!fields_.is_object(nj, ptr)) continue;
             GraphNode n;
             n.pointer = ptr;
-            if (!nj.contains("id") || !nj["id"].is_string()) {
-                diag_.error("node needs a string \"id\"", ptr);
-                continue;
-            }
-            n.id = nj["id"].get<std::string>();
+            if (!fields_.required(nj, "id", ptr, n.id)) continue;
             if (!is_valid_node_id(n.id)) {
                 diag_.error(fmt::format("node id \"{}\" may use only letters, digits, '_' and '-'", n.id), ptr + "/id", n.id);
                 continue;
@@ -263,17 +230,14 @@ private:
                 diag_.error(fmt::format("duplicate node id \"{}\"", n.id), ptr + "/id", n.id);
                 continue;
             }
-            if (!nj.contains("type") || !nj["type"].is_string()) {
-                diag_.error("node needs a string \"type\"", ptr, n.id);
-                continue;
-            }
-            n.type = nj["type"].get<std::string>();
+            JsonFieldReader fields = node_fields(n.id);
+            if (!fields.required(nj, "type", ptr, n.type)) continue;
             const bool custom = n.type == kCustomNodeType;
-            static const std::set<std::string> known{"id", "type", "inputs", "comment", "ui"};
-            static const std::set<std::string> known_custom{"ports", "code", "lipschitz"};
-            for (auto it = nj.begin(); it != nj.end(); ++it)
-                if (!known.count(it.key()) && !(custom && known_custom.count(it.key())))
-                    diag_.error(fmt::format("unknown node field \"{}\"", it.key()), ptr + "/" + it.key(), n.id);
+            if (custom)
+                fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui", "ports", "code", "lipschitz"},
+                                    "node field");
+            else
+                fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui"}, "node field");
             const NodeDefinition* def = nullptr;
             if (custom) {
                 n.custom = read_custom(nj, ptr, n.id);
@@ -286,40 +250,36 @@ private:
                                 ptr + "/type", n.id);
                 }
             }
-            if (nj.contains("inputs")) {
-                const json& ins = nj["inputs"];
-                if (!ins.is_object()) {
-                    diag_.error("\"inputs\" is an object of port -> binding", ptr + "/inputs", n.id);
-                } else {
-                    for (auto it = ins.begin(); it != ins.end(); ++it) {
-                        std::string ip = ptr + "/inputs/" + it.key();
-                        const PortDefinition* port = nullptr;
-                        if (def) port = def->find_input(it.key());
-                        if (n.custom)
-                            for (const auto& p : n.custom->inputs)
-                                if (p.name == it.key()) port = &p;
-                        if ((def || n.custom) && !port) {
-                            std::vector<std::string> names;
-                            for (const auto& p : def ? def->inputs : n.custom->inputs) names.push_back(p.name);
-                            diag_.error(fmt::format("{} has no input \"{}\"; its inputs are: {}", n.type, it.key(),
-                                                    names.empty() ? "(none)" : join(names)),
-                                        ip, n.id);
+            if (const json* inputs = fields.object_field(nj, "inputs", ptr)) {
+                const json& ins = *inputs;
+                for (auto it = ins.begin(); it != ins.end(); ++it) {
+                    std::string ip = ptr + "/inputs/" + it.key();
+                    const PortDefinition* port = nullptr;
+                    if (def) port = def->find_input(it.key());
+                    if (n.custom)
+                        for (const auto& p : n.custom->inputs)
+                            if (p.name == it.key()) port = &p;
+                    if ((def || n.custom) && !port) {
+                        std::vector<std::string> names;
+                        for (const auto& p : def ? def->inputs : n.custom->inputs) names.push_back(p.name);
+                        diag_.error(fmt::format("{} has no input \"{}\"; its inputs are: {}", n.type, it.key(),
+                                                names.empty() ? "(none)" : join(names)),
+                                    ip, n.id);
+                        continue;
+                    }
+                    auto b = read_binding(it.value(), ip, n.id);
+                    if (!b) continue;
+                    if (b->kind == Binding::Kind::Literal && port) {
+                        LiteralSite site{ip, n.id};
+                        if (port->type.concrete) {
+                            auto c = coerce_literal(b->literal, *port->type.concrete, site, diag_);
+                            if (!c || !check_range(*c, port->min, port->max, site, diag_)) continue;
+                            b->literal = *c;
+                        } else if (!check_range(b->literal, port->min, port->max, site, diag_)) {
                             continue;
                         }
-                        auto b = read_binding(it.value(), ip, n.id);
-                        if (!b) continue;
-                        if (b->kind == Binding::Kind::Literal && port) {
-                            LiteralSite site{ip, n.id};
-                            if (port->type.concrete) {
-                                auto c = coerce_literal(b->literal, *port->type.concrete, site, diag_);
-                                if (!c || !check_range(*c, port->min, port->max, site, diag_)) continue;
-                                b->literal = *c;
-                            } else if (!check_range(b->literal, port->min, port->max, site, diag_)) {
-                                continue;
-                            }
-                        }
-                        n.inputs[it.key()] = *b;
                     }
+                    n.inputs[it.key()] = *b;
                 }
             }
             if (def || n.custom) {
@@ -333,11 +293,13 @@ private:
     }
 
     void read_outputs(const json& doc, Graph& g) {
-        if (!doc.contains("outputs") || !doc["outputs"].is_object()) {
+        if (!doc.contains("outputs")) {
             diag_.error("missing \"outputs\": the graph must bind at least \"distance\"", "/outputs");
             return;
         }
-        const json& os = doc["outputs"];
+        const json* outputs = fields_.object_field(doc, "outputs", "");
+        if (!outputs) return;
+        const json& os = *outputs;
         for (auto it = os.begin(); it != os.end(); ++it) {
             std::string ptr = "/outputs/" + it.key();
             const GraphOutputSpec* spec = nullptr;
@@ -446,11 +408,8 @@ std::optional<Graph> load_graph(std::string_view json_text, const NodeLibrary& l
         diag.error(fmt::format("not a Fractograph graph: expected \"format\": \"{}\"", kGraphFormat), "/format");
         return std::nullopt;
     }
-    if (!doc->contains("version") || !(*doc)["version"].is_number_integer()) {
-        diag.error("missing integer \"version\"", "/version");
-        return std::nullopt;
-    }
-    auto version = (*doc)["version"].get<long long>();
+    std::int64_t version = 0;
+    if (!JsonFieldReader(diag).required(*doc, "version", "", version)) return std::nullopt;
     if (version > kGraphVersion) {
         diag.error(fmt::format("graph format version {} is newer than this fgc understands (up to {}); update "
                                "Fractograph",

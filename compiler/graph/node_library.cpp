@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "common/edit_distance.h"
+#include "common/json_fields.h"
 #include "identifiers.h"
 #include "json_text.h"
 #include "port_reader.h"
@@ -15,29 +17,7 @@ namespace fg {
 
 std::span<const EmbeddedFile> embedded_node_files();  // generated from nodes/ (nodes/CMakeLists.txt)
 
-namespace {
-
 using nlohmann::json;
-
-struct DefReader {
-    const std::string& path;
-    Diagnostics& diag;
-    void error(const std::string& msg, const std::string& ptr) { diag.error(fmt::format("{}: {}", path, msg), ptr); }
-
-    std::string string_field(const json& j, const char* key, const std::string& ptr, bool required) {
-        if (!j.contains(key)) {
-            if (required) error(fmt::format("missing \"{}\"", key), ptr);
-            return {};
-        }
-        if (!j[key].is_string()) {
-            error(fmt::format("\"{}\" must be a string", key), ptr + "/" + key);
-            return {};
-        }
-        return j[key].get<std::string>();
-    }
-};
-
-}  // namespace
 
 std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_path, std::string_view json_text,
                                                       Diagnostics& diag) {
@@ -50,55 +30,39 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
     if (!parsed) return nullptr;
     const json& j = *parsed;
     std::size_t errors_before = diag.error_count();
-    DefReader r{json_path, diag};
-    if (!j.is_object()) {
-        r.error("a node definition is a JSON object", "");
-        return nullptr;
-    }
-    static const std::set<std::string> known{"type", "summary", "doc", "context", "inputs", "outputs", "generic",
-                                             "lipschitz", "running_derivative", "effects", "example"};
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (!known.count(it.key())) r.error(fmt::format("unknown field \"{}\"", it.key()), "/" + it.key());
+    // Every problem names the definition file first.
+    JsonFieldReader r([&](const std::string& message, const std::string& pointer) {
+        diag.error(fmt::format("{}: {}", json_path, message), pointer);
+    });
+    if (!r.is_object(j, "")) return nullptr;
+    r.unknown_keys(j, "", {"type", "summary", "doc", "context", "inputs", "outputs", "generic", "lipschitz",
+                           "running_derivative", "effects", "example"});
 
     auto def = std::make_unique<NodeDefinition>();
     def->json_path = json_path;
-    def->type = r.string_field(j, "type", "", true);
+    r.required(j, "type", "", def->type);
     auto dot = def->type.find('.');
     if (!def->type.empty() && (dot == std::string::npos || dot == 0 || dot + 1 == def->type.size() ||
                                !is_valid_node_id(def->type.substr(0, dot)) ||
                                def->type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_.") != std::string::npos))
         r.error(fmt::format("type \"{}\" must be namespace.name in lower case", def->type), "/type");
-    def->summary = r.string_field(j, "summary", "", true);
-    def->doc = r.string_field(j, "doc", "", true);
-    auto ctx = r.string_field(j, "context", "", false);
-    if (ctx == "shade") def->context = NodeContext::Shade;
-    else if (!ctx.empty() && ctx != "any") r.error("context is \"any\" or \"shade\"", "/context");
+    r.required(j, "summary", "", def->summary);
+    r.required(j, "doc", "", def->doc);
+    std::string context;
+    if (r.optional(j, "context", "", context, Choices{"any", "shade"}) && context == "shade") def->context = NodeContext::Shade;
     def->builtin_input = def->namespace_name() == "input";
 
-    if (j.contains("generic")) {
-        if (!j["generic"].is_array()) r.error("\"generic\" is an array of type names", "/generic");
-        else
-            for (std::size_t i = 0; i < j["generic"].size(); ++i) {
-                const auto& g = j["generic"][i];
-                auto t = g.is_string() ? parse_type(g.get<std::string>()) : std::nullopt;
-                if (!t) r.error("unknown type", fmt::format("/generic/{}", i));
-                else def->generic.push_back(*t);
-            }
-    }
+    if (const json* generic = r.array_field(j, "generic", ""))
+        for (std::size_t i = 0; i < generic->size(); ++i)
+            if (ValueType t; r.read((*generic)[i], fmt::format("/generic/{}", i), t)) def->generic.push_back(t);
     for (const char* side : {"inputs", "outputs"}) {
         bool is_input = side == std::string("inputs");
-        if (!j.contains(side)) {
-            if (!is_input) r.error("missing \"outputs\"", "");
-            continue;
-        }
-        if (!j[side].is_array()) {
-            r.error(fmt::format("\"{}\" is an array of ports", side), std::string("/") + side);
-            continue;
-        }
+        const json* ports = r.array_field(j, side, "", !is_input);
+        if (!ports) continue;
         std::set<std::string> names;
-        for (std::size_t i = 0; i < j[side].size(); ++i) {
+        for (std::size_t i = 0; i < ports->size(); ++i) {
             std::string ptr = fmt::format("/{}/{}", side, i);
-            auto p = read_port_definition(j[side][i], ptr, is_input, !def->generic.empty(), true,
+            auto p = read_port_definition((*ports)[i], ptr, is_input, !def->generic.empty(), true,
                                           [&r](const std::string& m, const std::string& at) { r.error(m, at); });
             if (!p) continue;
             if (!names.insert(p->name).second) r.error(fmt::format("port \"{}\" declared twice", p->name), ptr + "/name");
@@ -107,35 +71,32 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
     }
     if (def->outputs.empty() && j.contains("outputs")) r.error("a node has at least one output", "/outputs");
 
-    if (j.contains("lipschitz")) {
-        const auto& l = j["lipschitz"];
-        if (l.is_string()) {
-            for (const auto& out : def->outputs) def->lipschitz[out.name] = l.get<std::string>();
-        } else if (l.is_object()) {
-            for (auto it = l.begin(); it != l.end(); ++it) {
-                if (!def->find_output(it.key())) r.error(fmt::format("no output \"{}\"", it.key()), "/lipschitz/" + it.key());
-                else if (!it.value().is_string()) r.error("a Lipschitz rule is a string", "/lipschitz/" + it.key());
-                else def->lipschitz[it.key()] = it.value().get<std::string>();
+    if (const json* l = JsonFieldReader::find(j, "lipschitz")) {
+        // One rule for every output, or a rule per output.
+        if (l->is_string()) {
+            for (const auto& out : def->outputs) def->lipschitz[out.name] = l->get<std::string>();
+        } else if (l->is_object()) {
+            for (auto it = l->begin(); it != l->end(); ++it) {
+                const std::string at = JsonFieldReader::field_pointer("/lipschitz", it.key());
+                if (!def->find_output(it.key())) r.error(fmt::format("no output \"{}\"", it.key()), at);
+                else r.read(it.value(), at, def->lipschitz[it.key()]);
             }
         } else {
-            r.error("\"lipschitz\" is a rule string or an object of output -> rule", "/lipschitz");
+            r.error(fmt::format("expected a rule string or an object of output -> rule, got {}", json_kind(*l)), "/lipschitz");
         }
     }
-    def->running_derivative = r.string_field(j, "running_derivative", "", false);
+    r.optional(j, "running_derivative", "", def->running_derivative);
     if (!def->running_derivative.empty()) {
         bool has_bias = std::any_of(def->inputs.begin(), def->inputs.end(), [](auto& p) { return p.knob == "bias"; });
         if (!has_bias) r.error("a node with a running derivative needs an input with \"knob\": \"bias\"", "/inputs");
     }
-    if (j.contains("effects")) {
-        if (!j["effects"].is_array()) r.error("\"effects\" is an array of effect names", "/effects");
-        else
-            for (std::size_t i = 0; i < j["effects"].size(); ++i) {
-                const auto& e = j["effects"][i];
-                auto eff = e.is_string() ? parse_effect(e.get<std::string>()) : std::nullopt;
-                if (!eff) r.error("unknown effect", fmt::format("/effects/{}", i));
-                else def->effects.push_back(*eff);
-            }
-    }
+    if (const json* effects = r.array_field(j, "effects", ""))
+        for (std::size_t i = 0; i < effects->size(); ++i) {
+            std::string ptr = fmt::format("/effects/{}", i), name;
+            if (!r.read((*effects)[i], ptr, name)) continue;
+            if (auto eff = parse_effect(name)) def->effects.push_back(*eff);
+            else r.error(fmt::format("unknown effect \"{}\"", name), ptr);
+        }
     if (j.contains("example")) def->example = j["example"];
     if (diag.error_count() != errors_before) return nullptr;
     return def;
@@ -231,20 +192,6 @@ std::vector<const NodeDefinition*> NodeLibrary::all() const {
     for (const auto& [_, d] : defs_) out.push_back(d.get());
     return out;
 }
-
-namespace {
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-}  // namespace
 
 std::vector<std::string> NodeLibrary::similar(const std::string& type) const {
     std::vector<std::pair<std::size_t, std::string>> scored;

@@ -1,8 +1,8 @@
 #include "port_reader.h"
 
 #include <fmt/format.h>
-#include <set>
 
+#include "common/json_fields.h"
 #include "identifiers.h"
 #include "literal.h"
 
@@ -10,30 +10,16 @@ namespace fg {
 
 std::optional<PortDefinition> read_port_definition(const nlohmann::json& j, const std::string& ptr, bool is_input,
                                                    bool generic_allowed, bool doc_required, const ReportError& error) {
-    if (!j.is_object()) {
-        error("a port is an object with \"name\" and \"type\"", ptr);
-        return std::nullopt;
-    }
-    static const std::set<std::string> known{"name", "type", "doc", "default", "min", "max", "knob", "effect"};
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (!known.count(it.key())) error(fmt::format("unknown field \"{}\"", it.key()), ptr + "/" + it.key());
-    auto text = [&](const char* key, bool required) -> std::string {
-        if (!j.contains(key)) {
-            if (required) error(fmt::format("missing \"{}\"", key), ptr);
-            return {};
-        }
-        if (!j[key].is_string()) {
-            error(fmt::format("\"{}\" must be a string", key), ptr + "/" + key);
-            return {};
-        }
-        return j[key].get<std::string>();
-    };
+    JsonFieldReader r(error);
+    if (!r.is_object(j, ptr)) return std::nullopt;
+    r.unknown_keys(j, ptr, {"name", "type", "doc", "default", "min", "max", "knob", "effect"});
     PortDefinition p;
-    p.name = text("name", true);
+    r.required(j, "name", ptr, p.name);
     if (!p.name.empty() && !is_valid_identifier(p.name))
         error(fmt::format("port name \"{}\" is not a valid identifier (lower case, digits, '_') or is reserved", p.name),
               ptr + "/name");
-    std::string type = text("type", true);
+    std::string type;
+    r.required(j, "type", ptr, type);
     if (type == "T") {
         if (!generic_allowed) error("generic type T needs the node to list its \"generic\" types", ptr + "/type");
     } else if (auto t = parse_type(type)) {
@@ -41,15 +27,10 @@ std::optional<PortDefinition> read_port_definition(const nlohmann::json& j, cons
     } else if (!type.empty()) {
         error(fmt::format("unknown type \"{}\" (float, int, bool, vec2, vec3, vec4)", type), ptr + "/type");
     }
-    p.doc = text("doc", doc_required);
-    for (const char* bound : {"min", "max"}) {
-        if (!j.contains(bound)) continue;
-        if (!j[bound].is_number()) {
-            error(fmt::format("\"{}\" must be a number", bound), ptr + "/" + bound);
-            continue;
-        }
-        (bound == std::string("min") ? p.min : p.max) = j[bound].get<double>();
-    }
+    if (doc_required) r.required(j, "doc", ptr, p.doc);
+    else r.optional(j, "doc", ptr, p.doc);
+    for (const char* bound : {"min", "max"})
+        if (double x = 0.0; r.optional(j, bound, ptr, x)) (bound == std::string("min") ? p.min : p.max) = x;
     if (p.min && p.max && *p.min > *p.max) error("min is greater than max", ptr + "/min");
     if (j.contains("default")) {
         if (!is_input) {
@@ -81,16 +62,12 @@ std::optional<PortDefinition> read_port_definition(const nlohmann::json& j, cons
             for (const auto& d : local.items()) error(d.message, d.pointer);
         }
     }
-    if (j.contains("knob")) {
-        p.knob = text("knob", false);
+    if (r.optional(j, "knob", ptr, p.knob, Choices{"iterations", "bias"})) {
         if (!is_input) error("only inputs can be knobs", ptr + "/knob");
-        if (p.knob != "iterations" && p.knob != "bias")
-            error(fmt::format("knob \"{}\": knobs are \"iterations\" or \"bias\"", p.knob), ptr + "/knob");
-        else if (p.knob == "iterations" && p.type.concrete != ValueType::Int) error("an iterations knob is an int", ptr);
+        if (p.knob == "iterations" && p.type.concrete != ValueType::Int) error("an iterations knob is an int", ptr);
         else if (p.knob == "bias" && p.type.concrete != ValueType::Float) error("a bias knob is a float", ptr);
     }
-    if (j.contains("effect")) {
-        auto e = text("effect", false);
+    if (std::string e; r.optional(j, "effect", ptr, e)) {
         if (auto eff = parse_effect(e)) p.effect = *eff;
         else error(fmt::format("unknown effect \"{}\"", e), ptr + "/effect");
     }

@@ -1,8 +1,9 @@
 #include "scene_settings.h"
 
+#include <atomic>
 #include <cmath>
-#include <fmt/format.h>
-#include <set>
+
+#include "common/json_fields.h"
 
 namespace fg {
 
@@ -10,163 +11,127 @@ namespace {
 
 using nlohmann::json;
 
-struct SceneReader {
-    Diagnostics& diag;
+std::atomic<std::uint64_t> parse_count{0};
 
-    void check_keys(const json& j, const std::string& ptr, std::initializer_list<const char*> keys) {
-        std::set<std::string> known(keys.begin(), keys.end());
-        for (auto it = j.begin(); it != j.end(); ++it)
-            if (!known.count(it.key()))
-                diag.error(fmt::format("unknown scene setting \"{}\"", it.key()), ptr + "/" + it.key());
+const NumberRange kCoordinate{-1e9, 1e9};
+const NumberRange kColour{0.0, 1e4};
+
+// Scene vectors may be written as one number for all three components (a grey, a uniform scale).
+struct SceneReader : JsonFieldReader {
+    using JsonFieldReader::JsonFieldReader;
+
+    void vector(const json& object, const char* key, const std::string& ptr, glm::dvec3& out,
+                NumberRange range = kCoordinate) {
+        const json* v = find(object, key);
+        if (!v) return;
+        double x = 0.0;
+        if (!v->is_number()) read(*v, field_pointer(ptr, key), out, range);
+        else if (read(*v, field_pointer(ptr, key), x, range)) out = glm::dvec3(x);
     }
-    bool object(const json& j, const std::string& ptr) {
-        if (j.is_object()) return true;
-        diag.error("expected an object", ptr);
-        return false;
-    }
-    void number(const json& j, const char* key, const std::string& ptr, double& out, double lo, double hi) {
-        if (!j.contains(key)) return;
-        const auto& v = j[key];
-        std::string p = ptr + "/" + key;
-        if (!v.is_number() || !std::isfinite(v.get<double>())) {
-            diag.error("expected a finite number", p);
-            return;
-        }
-        double x = v.get<double>();
-        if (x < lo || x > hi) {
-            diag.error(fmt::format("{} is out of range [{}, {}]", x, lo, hi), p);
-            return;
-        }
-        out = x;
-    }
-    void vec3(const json& j, const char* key, const std::string& ptr, glm::dvec3& out, double lo = -1e9,
-              double hi = 1e9) {
-        if (!j.contains(key)) return;
-        const auto& v = j[key];
-        std::string p = ptr + "/" + key;
-        if (v.is_number() && std::isfinite(v.get<double>())) {
-            out = glm::dvec3(v.get<double>());
-            return;
-        }
-        if (!v.is_array() || v.size() != 3) {
-            diag.error("expected an array of 3 numbers", p);
-            return;
-        }
-        glm::dvec3 r;
-        for (int i = 0; i < 3; ++i) {
-            if (!v[i].is_number() || !std::isfinite(v[i].get<double>()) || v[i].get<double>() < lo ||
-                v[i].get<double>() > hi) {
-                diag.error(fmt::format("component {} must be a finite number in [{}, {}]", i, lo, hi),
-                           fmt::format("{}/{}", p, i));
-                return;
-            }
-            r[i] = v[i].get<double>();
-        }
-        out = r;
+    // A block of settings: an object whose keys are all known, or nullptr (reported when it is no object).
+    const json* block(const json& scene, const char* key, const std::string& ptr,
+                      std::initializer_list<std::string_view> known) {
+        const json* b = object_field(scene, key, ptr);
+        if (b) unknown_keys(*b, field_pointer(ptr, key), known, "scene setting");
+        return b;
     }
 };
 
 }  // namespace
 
 SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagnostics& diag) {
+    ++parse_count;
     SceneSettings s;
     if (!jp) return s;
-    SceneReader r{diag};
+    SceneReader r(diag);
     const json& j = *jp;
-    if (!r.object(j, ptr)) return s;
-    r.check_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "vignette", "foveation", "bounds",
-                          "max_distance", "exposure", "scale", "locomotion", "step_factor", "precision"});
-    if (j.contains("camera") && r.object(j["camera"], ptr + "/camera")) {
-        const auto& c = j["camera"];
+    if (!r.is_object(j, ptr)) return s;
+    r.unknown_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "vignette", "foveation", "bounds",
+                            "max_distance", "exposure", "scale", "locomotion", "step_factor", "precision"},
+                   "scene setting");
+    if (const json* c = r.block(j, "camera", ptr, {"position", "target", "up", "fov_deg"})) {
         std::string p = ptr + "/camera";
-        r.check_keys(c, p, {"position", "target", "up", "fov_deg"});
-        r.vec3(c, "position", p, s.camera.position);
-        r.vec3(c, "target", p, s.camera.target);
-        r.vec3(c, "up", p, s.camera.up);
-        r.number(c, "fov_deg", p, s.camera.fov_deg, 10.0, 170.0);
-        if (s.camera.position == s.camera.target) diag.error("camera position and target coincide", p + "/target");
+        r.vector(*c, "position", p, s.camera.position);
+        r.vector(*c, "target", p, s.camera.target);
+        r.vector(*c, "up", p, s.camera.up);
+        r.optional(*c, "fov_deg", p, s.camera.fov_deg, NumberRange{10.0, 170.0});
+        if (s.camera.position == s.camera.target) r.error("camera position and target coincide", p + "/target");
     }
-    if (j.contains("light") && r.object(j["light"], ptr + "/light")) {
-        const auto& l = j["light"];
+    if (const json* l = r.block(j, "light", ptr, {"direction", "color", "ambient", "sss_color", "rim_color"})) {
         std::string p = ptr + "/light";
-        r.check_keys(l, p, {"direction", "color", "ambient", "sss_color", "rim_color"});
-        r.vec3(l, "direction", p, s.light.direction);
-        r.vec3(l, "color", p, s.light.color, 0.0, 1e4);
-        r.vec3(l, "ambient", p, s.light.ambient, 0.0, 1e4);
-        r.vec3(l, "sss_color", p, s.light.sss_color, 0.0, 1e4);
-        r.vec3(l, "rim_color", p, s.light.rim_color, 0.0, 1e4);
+        r.vector(*l, "direction", p, s.light.direction);
+        r.vector(*l, "color", p, s.light.color, kColour);
+        r.vector(*l, "ambient", p, s.light.ambient, kColour);
+        r.vector(*l, "sss_color", p, s.light.sss_color, kColour);
+        r.vector(*l, "rim_color", p, s.light.rim_color, kColour);
+        // A unit direction is left as it is, so that decoding what scene_settings_to_json wrote gives
+        // back the very same settings (the pack reader decodes what the compiler encoded).
         double len = glm::length(s.light.direction);
-        if (len < 1e-9) diag.error("light direction has zero length", p + "/direction");
-        else s.light.direction /= len;
+        if (len < 1e-9) r.error("light direction has zero length", p + "/direction");
+        else if (std::abs(len - 1.0) > 1e-12) s.light.direction /= len;
     }
-    r.vec3(j, "albedo", ptr, s.albedo, 0.0, 1e4);
-    if (j.contains("background")) {
-        const auto& b = j["background"];
+    r.vector(j, "albedo", ptr, s.albedo, kColour);
+    if (const json* b = JsonFieldReader::find(j, "background")) {
         std::string p = ptr + "/background";
-        if (b.is_array() || b.is_number()) {
-            r.vec3(j, "background", ptr, s.background.top, 0.0, 1e4);
+        if (!b->is_object()) {
+            r.vector(j, "background", ptr, s.background.top, kColour);
             s.background.bottom = s.background.top;
-        } else if (r.object(b, p)) {
-            r.check_keys(b, p, {"top", "bottom"});
-            r.vec3(b, "top", p, s.background.top, 0.0, 1e4);
+        } else {
+            r.unknown_keys(*b, p, {"top", "bottom"}, "scene setting");
+            r.vector(*b, "top", p, s.background.top, kColour);
             s.background.bottom = s.background.top;
-            r.vec3(b, "bottom", p, s.background.bottom, 0.0, 1e4);
+            r.vector(*b, "bottom", p, s.background.bottom, kColour);
         }
     }
-    if (j.contains("fog") && r.object(j["fog"], ptr + "/fog")) {
-        const auto& f = j["fog"];
+    if (const json* f = r.block(j, "fog", ptr, {"color", "density"})) {
         std::string p = ptr + "/fog";
-        r.check_keys(f, p, {"color", "density"});
         SceneSettings::Fog fog;
-        r.vec3(f, "color", p, fog.color, 0.0, 1e4);
-        r.number(f, "density", p, fog.density, 0.0, 1e6);
+        r.vector(*f, "color", p, fog.color, kColour);
+        r.optional(*f, "density", p, fog.density, NumberRange{0.0, 1e6});
         s.fog = fog;
     }
-    if (j.contains("glow") && r.object(j["glow"], ptr + "/glow")) {
-        const auto& g = j["glow"];
+    if (const json* g = r.block(j, "glow", ptr, {"color", "intensity", "falloff"})) {
         std::string p = ptr + "/glow";
-        r.check_keys(g, p, {"color", "intensity", "falloff"});
         SceneSettings::Glow glow;
-        r.vec3(g, "color", p, glow.color, 0.0, 1e4);
-        r.number(g, "intensity", p, glow.intensity, 0.0, 1e4);
-        r.number(g, "falloff", p, glow.falloff, 1e-9, 1e6);
+        r.vector(*g, "color", p, glow.color, kColour);
+        r.optional(*g, "intensity", p, glow.intensity, NumberRange{0.0, 1e4});
+        r.optional(*g, "falloff", p, glow.falloff, NumberRange{1e-9, 1e6});
         s.glow = glow;
     }
-    if (j.contains("vignette") && r.object(j["vignette"], ptr + "/vignette")) {
-        std::string p = ptr + "/vignette";
-        r.check_keys(j["vignette"], p, {"strength"});
-        SceneSettings::Vignette v;
-        r.number(j["vignette"], "strength", p, v.strength, 0.0, 1.0);
-        s.vignette = v;
+    if (const json* v = r.block(j, "vignette", ptr, {"strength"})) {
+        SceneSettings::Vignette vignette;
+        r.optional(*v, "strength", ptr + "/vignette", vignette.strength, NumberRange{0.0, 1.0});
+        s.vignette = vignette;
     }
-    if (j.contains("foveation") && r.object(j["foveation"], ptr + "/foveation")) {
+    if (const json* f = r.block(j, "foveation", ptr, {"inner_radius", "blend"})) {
         std::string p = ptr + "/foveation";
-        r.check_keys(j["foveation"], p, {"inner_radius", "blend"});
-        SceneSettings::Foveation f;
-        r.number(j["foveation"], "inner_radius", p, f.inner_radius, 0.05, 1.0);
-        r.number(j["foveation"], "blend", p, f.blend, 0.0, 0.5);
-        s.foveation = f;
+        SceneSettings::Foveation foveation;
+        r.optional(*f, "inner_radius", p, foveation.inner_radius, NumberRange{0.05, 1.0});
+        r.optional(*f, "blend", p, foveation.blend, NumberRange{0.0, 0.5});
+        s.foveation = foveation;
     }
-    if (j.contains("bounds") && r.object(j["bounds"], ptr + "/bounds")) {
+    if (const json* b = r.block(j, "bounds", ptr, {"center", "radius"})) {
         std::string p = ptr + "/bounds";
-        r.check_keys(j["bounds"], p, {"center", "radius"});
-        r.vec3(j["bounds"], "center", p, s.bounds_center);
-        r.number(j["bounds"], "radius", p, s.bounds_radius, 1e-9, 1e9);
+        r.vector(*b, "center", p, s.bounds_center);
+        r.optional(*b, "radius", p, s.bounds_radius, NumberRange{1e-9, 1e9});
     }
-    r.number(j, "max_distance", ptr, s.max_distance, 1e-6, 1e9);
-    r.number(j, "exposure", ptr, s.exposure, 0.0, 1e4);
-    r.number(j, "scale", ptr, s.world_scale, 1e-12, 1e12);
-    r.number(j, "step_factor", ptr, s.step_factor, 0.05, 1.0);
-    if (j.contains("precision")) {
-        const auto& v = j["precision"];
-        if (v == "float" || v == "double") s.double_precision = v == "double";
-        else diag.error("expected \"float\" or \"double\"", ptr + "/precision");
-    }
-    if (j.contains("locomotion")) {
-        if (r.object(j["locomotion"], ptr + "/locomotion")) s.locomotion = j["locomotion"];
+    r.optional(j, "max_distance", ptr, s.max_distance, NumberRange{1e-6, 1e9});
+    r.optional(j, "exposure", ptr, s.exposure, NumberRange{0.0, 1e4});
+    r.optional(j, "scale", ptr, s.world_scale, NumberRange{1e-12, 1e12});
+    r.optional(j, "step_factor", ptr, s.step_factor, NumberRange{0.05, 1.0});
+    std::string precision;
+    if (r.optional(j, "precision", ptr, precision, Choices{"float", "double"}))
+        s.double_precision = precision == "double";
+    if (const json* l = r.block(j, "locomotion", ptr, {"speed_per_distance", "max_speed", "head_radius"})) {
+        std::string p = ptr + "/locomotion";
+        r.optional(*l, "speed_per_distance", p, s.locomotion.speed_per_distance, NumberRange::positive());
+        r.optional(*l, "max_speed", p, s.locomotion.max_speed, NumberRange::positive());
+        r.optional(*l, "head_radius", p, s.locomotion.head_radius, NumberRange::positive());
     }
     return s;
 }
+
+std::uint64_t scene_settings_parse_count() { return parse_count.load(); }
 
 json scene_settings_to_json(const SceneSettings& s) {
     auto v = [](const glm::dvec3& x) { return json::array({x.x, x.y, x.z}); };
@@ -190,7 +155,9 @@ json scene_settings_to_json(const SceneSettings& s) {
     j["scale"] = s.world_scale;
     j["step_factor"] = s.step_factor;
     if (s.double_precision) j["precision"] = "double";
-    j["locomotion"] = s.locomotion;
+    j["locomotion"] = {{"speed_per_distance", s.locomotion.speed_per_distance},
+                       {"max_speed", s.locomotion.max_speed},
+                       {"head_radius", s.locomotion.head_radius}};
     return j;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // Scene settings of a graph ("scene": {...}): camera start, light, background and the post
 // effects. Present blocks turn effects on (fog, glow, vignette, foveation); their values become
-// uniforms, so editing them never recompiles.
+// uniforms, so editing them never recompiles. The compiler decodes them from the graph, the pack
+// reader from the manifest; the runtime only ever sees this struct.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -12,12 +14,24 @@
 
 namespace fg {
 
+// The limits of flight through the scene ("locomotion"; runtime/locomotion/locomotion.h).
+struct LocomotionSettings {
+    double speed_per_distance = 1.0;   // 1/s: speed = this * distance to the nearest surface
+    double max_speed = 2.0;            // scene units per second per unit of world scale
+    // Metres (scene units per unit of world scale): the closest the head gets. More than half the
+    // distance between the eyes, so that neither eye enters the surface.
+    double head_radius = 0.05;
+
+    bool operator==(const LocomotionSettings&) const = default;
+};
+
 struct SceneSettings {
     struct Camera {
         glm::dvec3 position{0.0, 0.0, 3.0};
         glm::dvec3 target{0.0, 0.0, 0.0};
         glm::dvec3 up{0.0, 1.0, 0.0};
         double fov_deg = 90.0;
+        bool operator==(const Camera&) const = default;
     } camera;
     struct Light {
         glm::dvec3 direction{0.577, 0.577, 0.577};   // towards the light
@@ -25,30 +39,36 @@ struct SceneSettings {
         glm::dvec3 ambient{0.12, 0.14, 0.18};
         glm::dvec3 sss_color{1.0, 0.4, 0.25};
         glm::dvec3 rim_color{0.6, 0.8, 1.0};
+        bool operator==(const Light&) const = default;
     } light;
     glm::dvec3 albedo{0.8, 0.8, 0.8};                 // when the graph binds no albedo
     struct Background {
         glm::dvec3 top{0.02, 0.02, 0.03};
         glm::dvec3 bottom{0.02, 0.02, 0.03};
+        bool operator==(const Background&) const = default;
     } background;
     struct Fog {
         glm::dvec3 color{0.05, 0.05, 0.08};
         double density = 0.1;                         // extinction per unit distance
+        bool operator==(const Fog&) const = default;
     };
     std::optional<Fog> fog;
     struct Glow {
         glm::dvec3 color{0.4, 0.7, 1.0};
         double intensity = 1.0;
         double falloff = 0.05;                        // distance at which glow drops to 1/e
+        bool operator==(const Glow&) const = default;
     };
     std::optional<Glow> glow;
     struct Vignette {
         double strength = 0.4;
+        bool operator==(const Vignette&) const = default;
     };
     std::optional<Vignette> vignette;
     struct Foveation {
         double inner_radius = 0.35;                   // of the half-diagonal, full resolution inside
         double blend = 0.15;
+        bool operator==(const Foveation&) const = default;
     };
     std::optional<Foveation> foveation;
     glm::dvec3 bounds_center{0.0, 0.0, 0.0};
@@ -60,14 +80,19 @@ struct SceneSettings {
     // of unit-size fractals); "float" everywhere else (docs/graph-format.md).
     bool double_precision = false;
     double step_factor = 1.0;                         // times 1 / Lipschitz bound: the march's step scale (fgc calibrate)
-    nlohmann::json locomotion = nlohmann::json::object();  // limits for the locomotion system
+    LocomotionSettings locomotion;
 
     bool has_background_gradient() const { return background.top != background.bottom; }
+    bool operator==(const SceneSettings&) const = default;
 };
 
 // Parse "scene" (may be absent); unknown keys, wrong types and out-of-range values are reported
 // under `pointer` (normally "/scene").
 SceneSettings parse_scene_settings(const nlohmann::json* j, const std::string& pointer, Diagnostics& diag);
 nlohmann::json scene_settings_to_json(const SceneSettings& s);
+
+// How many times parse_scene_settings has run in this process: tests hold the runtime to decoding
+// a pack's scene once, when the pack is read.
+std::uint64_t scene_settings_parse_count();
 
 }  // namespace fg

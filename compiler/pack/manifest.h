@@ -13,6 +13,7 @@
 #include "common/diagnostics.h"
 #include "common/effects.h"
 #include "common/value_type.h"
+#include "graph/scene_settings.h"
 
 namespace fg {
 
@@ -33,6 +34,9 @@ struct ManifestBinding {
     std::uint32_t binding = 0;
     std::string kind;   // uniform_buffer, storage_buffer, storage_image, sampled_image
     std::string name;   // the block or image name in the shader
+    // What the shader may do with it, from its qualifiers: "read" (readonly, uniform blocks),
+    // "write" (writeonly) or "read_write". Packs from before it was recorded read as "read_write".
+    std::string access = "read_write";
 };
 
 // An accuracy knob as a specialization constant. Ids start at 1: id 0 is never used.
@@ -78,7 +82,7 @@ struct PackManifest {
     // The scene repeats with this period on every axis (analysis/periodicity.h); absent in packs
     // from before it was recorded and in scenes that do not repeat.
     std::optional<std::array<double, 3>> period;
-    nlohmann::json scene = nlohmann::json::object();   // scene settings (graph/scene_settings.h)
+    SceneSettings scene;               // decoded once, when the manifest is read
     std::map<std::string, std::uint32_t> uniform_blocks;  // block type name -> size, from reflection
     // "double": the scene runs in double around the camera and needs shaderFloat64. Packs written
     // before the field existed are "float".

@@ -15,6 +15,24 @@ struct ContextGuard {
     }
 };
 
+// From the qualifiers: readonly images and buffers are NonWritable, writeonly ones NonReadable
+// (on the variable for images, on the block's members for buffers).
+std::string binding_access(spvc_compiler compiler, spvc_variable_id id, spvc_resource_type type) {
+    if (type == SPVC_RESOURCE_TYPE_UNIFORM_BUFFER || type == SPVC_RESOURCE_TYPE_SAMPLED_IMAGE) return "read";
+    bool no_write = spvc_compiler_has_decoration(compiler, id, SpvDecorationNonWritable);
+    bool no_read = spvc_compiler_has_decoration(compiler, id, SpvDecorationNonReadable);
+    if (type == SPVC_RESOURCE_TYPE_STORAGE_BUFFER) {
+        const SpvDecoration* decorations = nullptr;
+        size_t count = 0;
+        spvc_compiler_get_buffer_block_decorations(compiler, id, &decorations, &count);
+        for (size_t i = 0; i < count; ++i) {
+            no_write = no_write || decorations[i] == SpvDecorationNonWritable;
+            no_read = no_read || decorations[i] == SpvDecorationNonReadable;
+        }
+    }
+    return no_write ? "read" : no_read ? "write" : "read_write";
+}
+
 }  // namespace
 
 std::optional<PassReflection> reflect_spirv(const std::string& pass, const std::vector<std::uint32_t>& words,
@@ -56,6 +74,7 @@ std::optional<PassReflection> reflect_spirv(const std::string& pass, const std::
             b.binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
             b.kind = kind.name;
             b.name = list[i].name;
+            b.access = binding_access(compiler, list[i].id, kind.type);
             if (kind.type == SPVC_RESOURCE_TYPE_UNIFORM_BUFFER) {
                 spvc_type type = spvc_compiler_get_type_handle(compiler, list[i].base_type_id);
                 BlockLayout layout;

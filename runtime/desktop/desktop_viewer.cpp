@@ -86,14 +86,10 @@ int view(const ViewOptions& o) {
         StereoSettings stereo;
         stereo.width = o.width;
         stereo.height = o.height;
-        auto scene_of = [](const Pack& p) {
-            Diagnostics ignore;
-            return parse_scene_settings(&p.manifest.scene, "/scene", ignore);
-        };
         auto fov_of = [&](const SceneSettings& s) { return Fov::symmetric(s.camera.fov_deg, double(o.width) / o.height); };
         // Executors follow `frame` and `stereo` as they are when built: the governor's level too.
         auto build_executor = [&](const Pack& p) {
-            SceneSettings s = scene_of(p);
+            const SceneSettings& s = p.manifest.scene;
             StereoSettings st = stereo;
             st.world_scale = s.world_scale;
             StereoViews v = make_stereo_views(HeadPose{}, fov_of(s), fov_of(s), st);
@@ -115,12 +111,12 @@ int view(const ViewOptions& o) {
             }
             governor = std::make_unique<FrameGovernor>(std::move(ladder));
         }
-        SceneSettings scene = scene_of(*playing.pack);
+        SceneSettings scene = playing.pack->manifest.scene;
         fmt::print("fgplay view: {} on {} ({:.0f} ms to load, {:.0f} ms for pipelines)\n", o.path, ctx.device_name(),
                    playing.compile_ms, playing.pipelines_ms);
         FlyCamera camera(look_at(scene.camera.position, scene.camera.target, scene.camera.up));
         auto make_flight = [&] {
-            return std::make_unique<ProbedFlight>(ctx, *playing.pack, locomotion_settings(scene.locomotion), scene.world_scale);
+            return std::make_unique<ProbedFlight>(ctx, *playing.pack, scene.locomotion, scene.world_scale);
         };
         std::unique_ptr<ProbedFlight> flight = make_flight();
         std::unique_ptr<CollisionWitness> witness;
@@ -189,7 +185,7 @@ int view(const ViewOptions& o) {
             if (auto fresh = source.poll(error)) {
                 ctx.wait_idle();
                 playing = std::move(*fresh);
-                scene = scene_of(*playing.pack);
+                scene = playing.pack->manifest.scene;
                 flight = make_flight();
                 world_scale = WorldScale(scene.world_scale);
                 status = fmt::format("reloaded {} in {:.0f} ms + {:.0f} ms pipelines", playing.pack->manifest.name, playing.compile_ms,
@@ -208,12 +204,12 @@ int view(const ViewOptions& o) {
             playing.executor->set_frame(make_gpu_frame(views, this_frame, frames / 60.0, world_scale.current(),
                                                        static_cast<std::uint32_t>(frames)));
             // Flying and mouse-look are both artificial motion: both drive the comfort vignette. A
-            // snap turn fades the image (misc2.y).
-            GpuScene scene_gpu = make_gpu_scene(playing.pack->manifest.scene);
-            if (scene_gpu.misc[2] > 0.0f)
-                scene_gpu.misc[2] = static_cast<float>(comfort_vignette(
-                    glm::length(flight->locomotion().velocity()) / world_scale.current(), turn, scene_gpu.misc[2]));
-            scene_gpu.misc2[1] = static_cast<float>(1.0 - snapped.brightness);
+            // snap turn fades the image.
+            GpuScene scene_gpu = make_gpu_scene(scene);
+            if (scene_gpu.vignette > 0.0f)
+                scene_gpu.vignette = static_cast<float>(comfort_vignette(
+                    glm::length(flight->locomotion().velocity()) / world_scale.current(), turn, scene_gpu.vignette));
+            scene_gpu.fade = static_cast<float>(1.0 - snapped.brightness);
             playing.executor->set_scene(scene_gpu);
             FrameStats stats = playing.executor->run();
             ++frames;
@@ -266,6 +262,8 @@ int view(const ViewOptions& o) {
         fmt::print("snap turns: {}; world scale: {:.4g} -> {:.4g}, largest change per frame {:.2f} %\n", snap.turns(), scale_first,
                    world_scale.current(), 100.0 * scale_step_max);
         if (witness) fmt::print("{}\n", witness->summary());
+        // Once per pack read (and per compile with --watch), never per frame: the tests hold it to that.
+        fmt::print("scene settings decoded: {}\n", scene_settings_parse_count());
         if (ctx.validation_enabled()) {
             fmt::print("Vulkan validation: {} errors\n", ctx.validation_errors());
             if (ctx.validation_errors() > 0) return 1;

@@ -1,8 +1,9 @@
 #include "desktop/view_command.h"
 
-#include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
+
+#include "frame/frame_arguments.h"
 
 namespace fg::desktop {
 
@@ -30,15 +31,9 @@ void add_view_command(CLI::App& app, ViewCommand& c) {
 }
 
 int ViewCommand::run() {
-    unsigned w = 0, h = 0;
-    if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > 8192 || h > 8192) {
-        fmt::print(stderr, "fgplay view: --size must look like 256x256\n");
-        return 2;
-    }
-    options.width = w;
-    options.height = h;
-    if (!parse_stereo_mode(stereo, options.stereo)) {
-        fmt::print(stderr, "fgplay view: --stereo is reproject, per-eye or naive, not '{}'\n", stereo);
+    std::string error;
+    if (!parse_size(size, 8192, options.width, options.height, error) || !parse_stereo(stereo, options.stereo, error)) {
+        fmt::print(stderr, "fgplay view: {}\n", error);
         return 2;
     }
     if (options.watch && std::filesystem::path(options.path).extension() != ".json") {

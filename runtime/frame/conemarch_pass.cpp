@@ -7,11 +7,11 @@
 namespace fg {
 
 namespace {
+
 // Size of a level (ceil division), as fg_level_rect in common.glsl.
 std::uint32_t level_size(std::uint32_t full, std::uint32_t level) { return (full + (1u << level) - 1) >> level; }
-}  // namespace
 
-void add_conemarch_passes(FrameGraph& g, int view) {
+void add_view(FrameGraph& g, int view) {
     std::string name = view_name(view);
     bool centre = view == kCentreView;
     std::uint32_t w = centre ? g.centre_width : g.width, h = centre ? g.centre_height : g.height;
@@ -29,54 +29,66 @@ void add_conemarch_passes(FrameGraph& g, int view) {
     g.add_image({depth, w, h, ImageFormat::R32F, "hit distance or miss"});
     bool glow = g.effects.has(Effect::Glow);
     if (glow) g.add_image({"glow." + name, w, h, ImageFormat::R32F, "closest approach along the ray"});
-    std::int32_t slot = 0;
     // The tail queue: big enough for every pixel when the tail pass runs, a stub otherwise (the
     // program declares it either way).
     std::string queue = "tail." + name;
     bool tail = g.tail_after > 0 && g.manifest_has_tail;
     g.add_buffer({queue, tail ? 16 + 16ull * w * h : 32, {0, 1, 1, 0},
                   tail ? "pixels whose march continues in the tail pass" : "(tail pass off)"});
-    for (std::uint32_t k = levels; k-- > 0;) {
+    // Persistent lanes' work queues at full resolution: one word per dispatch (stride 1 and 2).
+    std::string lanes = "lanes." + name;
+    g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each full-resolution dispatch" : "(persistent lanes off)"});
+    auto level_pass = [&](std::uint32_t k, int stride) {
         FramePass p;
         p.label = fmt::format("conemarch.{}.L{}", name, k);
         p.program = "conemarch";
         p.timer = "march";
-        // Every level binds what the program declares; only level 0 writes the depth and glow.
-        p.bindings = {{"fg_levels", atlas}, {"fg_depth", depth}, {"FgTail", queue}};
-        if (glow) p.bindings.push_back({"fg_glow", "glow." + name});
-        p.writes = {atlas};
-        if (k + 1 < levels) p.reads = {atlas};
-        if (k == 0) {
-            p.writes.push_back(depth);
-            if (glow) p.writes.push_back("glow." + name);
-        }
-        p.counter_slot = slot = g.counter_slot(fmt::format("march.L{}", k));
-        p.push = {view, static_cast<std::int32_t>(k), k + 1 == levels ? 1 : 0, slot};
-        p.groups[0] = (level_size(w, k) + 7) / 8;
-        p.groups[1] = (level_size(h, k) + 7) / 8;
-        if (k == 0 && tail) p.writes.push_back(queue);
-        if (k == 0) {
-            g.add_pixel_pass(std::move(p), view);
-        } else {
-            p.push.push_back(1);
-            g.add_pass(std::move(p));
-        }
+        // Every level binds what the program declares; only level 0 writes the depth, glow and queue.
+        p.bind("fg_levels", atlas, k + 1 < levels ? Access::ReadWrite : Access::Write);
+        p.bind("fg_depth", depth, Access::Write);
+        p.bind("FgTail", queue, Access::ReadWrite);
+        p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+        if (glow) p.bind("fg_glow", "glow." + name, Access::Write);
+        p.persistent_lanes = k == 0 && g.persistent_lanes;
+        p.counter_slot = g.counter_slot(fmt::format("march.L{}", k));
+        p.set_push(ConemarchPush{view, static_cast<std::int32_t>(k), k + 1 == levels ? 1 : 0, p.counter_slot, stride});
+        return p;
+    };
+    for (std::uint32_t k = levels; k-- > 1;) {
+        FramePass p = level_pass(k, 1);
+        p.invocations = {level_size(w, k), level_size(h, k), 1};
+        g.add_pass(std::move(p));
+    }
+    if (centre) {
+        FramePass p = level_pass(0, 1);
+        p.invocations = {w, h, 1};
+        g.add_pass(std::move(p));
+    } else {
+        g.add_pixel_pass(view, [&](int stride) { return level_pass(0, stride); });
     }
     if (tail) {
         FramePass p;
         p.label = "tail." + name;
         p.program = "tail";
         p.timer = "march";
-        p.bindings = {{"fg_levels", atlas}, {"fg_depth", depth}, {"FgTail", queue}};
-        if (glow) p.bindings.push_back({"fg_glow", "glow." + name});
-        p.reads = {queue, atlas};
-        p.writes = {atlas, depth};
-        if (glow) p.writes.push_back("glow." + name);
+        p.bind("fg_levels", atlas, Access::ReadWrite);
+        p.bind("fg_depth", depth, Access::Write);
+        p.bind("FgTail", queue, Access::Read);
+        if (glow) p.bind("fg_glow", "glow." + name, Access::Write);
         p.counter_slot = g.counter_slot("tail");
-        p.push = {view, p.counter_slot};
+        p.set_push(TailPush{view, p.counter_slot});
         p.indirect = queue;
         g.add_pass(std::move(p));
     }
+}
+
+}  // namespace
+
+void add_conemarch_passes(FrameGraph& g) {
+    if (g.settings.stereo == StereoMode::Naive) return;
+    if (g.settings.stereo == StereoMode::Reproject && !g.is_panorama()) add_view(g, kCentreView);
+    else
+        for (int view : g.output_views()) add_view(g, view);
 }
 
 }  // namespace fg

@@ -4,19 +4,20 @@
 
 namespace fg {
 
-void add_fovea_pass(FrameGraph& g, int view) {
-    std::string eye = view_name(view);
-    FramePass p;
-    p.label = "fovea." + eye;
-    p.program = "fovea";
-    p.timer = "post";
-    p.bindings = {{"fg_depth", "depth." + eye}, {"fg_final", "final." + eye}};
-    p.reads = {"depth." + eye, "final." + eye};
-    p.writes = {"depth." + eye, "final." + eye};
-    p.push = {view};
-    p.groups[0] = (g.width + 7) / 8;
-    p.groups[1] = (g.height + 7) / 8;
-    g.add_pass(std::move(p));
+void add_fovea_passes(FrameGraph& g) {
+    if (g.settings.foveation <= 0.0) return;
+    for (int view : {kLeftView, kRightView}) {
+        std::string eye = view_name(view);
+        FramePass p;
+        p.label = "fovea." + eye;
+        p.program = "fovea";
+        p.timer = "post";
+        p.bind("fg_depth", "depth." + eye, Access::ReadWrite);
+        p.bind("fg_final", "final." + eye, Access::ReadWrite);
+        p.set_push(FoveaPush{view});
+        p.invocations = {g.width, g.height, 1};
+        g.add_pass(std::move(p));
+    }
 }
 
 }  // namespace fg

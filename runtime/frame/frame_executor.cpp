@@ -72,7 +72,7 @@ vk::SpecializationValues specialization_for(const PackManifest& m, const Manifes
 }
 
 FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph)
-    : ctx_(ctx), manifest_(pack.manifest), graph_(std::move(graph)) {
+    : ctx_(ctx), manifest_(pack.manifest), graph_(std::move(graph)), batches_(graph_.batches()) {
     auto check_block = [&](const char* name, std::size_t size) {
         auto it = manifest_.uniform_blocks.find(name);
         if (it != manifest_.uniform_blocks.end() && it->second != size)
@@ -91,6 +91,7 @@ FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGrap
             "with fgc compile --precision float (deep zooms then lose their structure)",
             manifest_.name, ctx.device_name()));
     make_programs(pack);
+    check_declarations();
     make_resources();
     make_descriptor_sets();
 }
@@ -118,9 +119,44 @@ void FrameExecutor::make_programs(const Pack& pack) {
     }
 }
 
+// The declarations drive the barriers, so they must say what the shaders do: every resource a
+// shader reads is declared read (or written), every one it writes is declared written, and the push
+// constants are exactly the shader's block.
+void FrameExecutor::check_declarations() const {
+    for (const auto& pass : graph_.passes()) {
+        const ManifestPass& mp = *programs_.at(pass.program).manifest;
+        if (pass.push.size() != mp.push_constant_size)
+            throw std::runtime_error(fmt::format("pass {} pushes {} bytes of constants, and its shader's block is {} bytes: "
+                                                 "the runtime and the pack disagree (recompile the pack with this fgc)",
+                                                 pass.label, pass.push.size(), mp.push_constant_size));
+        for (const auto& b : mp.bindings) {
+            std::string resource;
+            for (const auto& [name, res] : pass.bindings)
+                if (name == b.name) resource = res;
+            if (resource.empty()) continue;   // a standard resource, or missing: make_descriptor_sets says which
+            bool read = pass.reads_resource(resource), written = pass.writes_resource(resource);
+            const char* problem = nullptr;
+            if (b.access == "read" && !read && !written) problem = "reads";
+            if (b.access == "write" && !written) problem = "writes";
+            if (b.access == "read_write" && !read && !written) problem = "uses";
+            if (problem)
+                throw std::runtime_error(fmt::format("pass {} binds {} to '{}', which its shader {}, but the pass does not "
+                                                     "declare it: its barriers would be wrong",
+                                                     pass.label, resource, b.name, problem));
+        }
+        for (const auto& r : pass.reads)
+            if (!graph_.find_image(r) && !graph_.find_buffer(r) && !(r.ends_with(".previous") &&
+                                                                       graph_.find_image(r.substr(0, r.size() - 9))))
+                throw std::runtime_error(fmt::format("pass {} reads {}, which the frame graph does not have", pass.label, r));
+    }
+}
+
 void FrameExecutor::make_resources() {
-    for (const auto& img : graph_.images())
-        images_[img.name] = std::make_unique<vk::StorageImage>(ctx_, vk_format(img.format), VkExtent2D{img.width, img.height});
+    for (const auto& img : graph_.images()) {
+        auto& versions = images_[img.name];
+        for (int i = 0; i < (img.history ? 2 : 1); ++i)
+            versions.push_back(std::make_unique<vk::StorageImage>(ctx_, vk_format(img.format), VkExtent2D{img.width, img.height}));
+    }
     for (const auto& b : graph_.buffers())
         buffers_[b.name] = std::make_unique<vk::Buffer>(
             ctx_, b.size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
@@ -130,9 +166,29 @@ void FrameExecutor::make_resources() {
     params_ = std::make_unique<vk::Buffer>(ctx_, params_bytes_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                            vk::MemoryKind::HostVisible);
     for (const auto& p : manifest_.params) set_param(p.name, p.value);
+    // Per counter slot: evaluations, busy lane-iterations, all lane-iterations (march_counters.glsl).
     std::size_t slots = std::max<std::size_t>(1, graph_.counter_groups().size());
-    counters_ = std::make_unique<vk::Buffer>(ctx_, slots * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+    counters_ = std::make_unique<vk::Buffer>(ctx_, slots * 3 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
     set_scene(make_gpu_scene(manifest_.scene));
+}
+
+vk::StorageImage* FrameExecutor::resolve_image(const std::string& name, std::uint64_t frame) const {
+    bool prev = name.ends_with(".previous");
+    auto it = images_.find(prev ? name.substr(0, name.size() - 9) : name);
+    if (it == images_.end()) return nullptr;
+    const auto& versions = it->second;
+    if (versions.size() == 1) return prev ? nullptr : versions[0].get();
+    // History images alternate: frame n writes version n % 2 and reads the other as its previous.
+    return versions[(frame + (prev ? 1 : 0)) % 2].get();
+}
+
+vk::Buffer* FrameExecutor::resolve_buffer(const std::string& name) const {
+    if (name == "frame") return frame_.get();
+    if (name == "scene") return scene_.get();
+    if (name == "params") return params_.get();
+    if (name == "counters") return counters_.get();
+    auto it = buffers_.find(name);
+    return it == buffers_.end() ? nullptr : it->second.get();
 }
 
 void FrameExecutor::make_descriptor_sets() {
@@ -142,37 +198,38 @@ void FrameExecutor::make_descriptor_sets() {
     for (const auto& pass : graph_.passes())
         for (const auto& b : programs_.at(pass.program).manifest->bindings)
             for (auto& s : sizes)
-                if (s.type == descriptor_type(b.kind)) ++s.descriptorCount;
-    pool_ = std::make_unique<vk::DescriptorPool>(ctx_, static_cast<std::uint32_t>(graph_.passes().size()), sizes);
+                if (s.type == descriptor_type(b.kind)) s.descriptorCount += 2;
+    pool_ = std::make_unique<vk::DescriptorPool>(ctx_, static_cast<std::uint32_t>(2 * graph_.passes().size()), sizes);
     for (const auto& pass : graph_.passes()) {
         const Program& prog = programs_.at(pass.program);
-        VkDescriptorSet set = pool_->allocate(*prog.layout);
-        for (const auto& b : prog.manifest->bindings) {
-            std::string resource;
-            for (const auto& [name, res] : pass.bindings)
-                if (name == b.name) resource = res;
-            if (resource.empty()) {
-                const char* std_res = standard_resource(b.name);
-                if (!std_res)
-                    throw std::runtime_error(fmt::format("pass {} binds '{}' ({}), which this runtime's frame graph "
-                                                         "does not provide: recompile the pack with this fgc",
-                                                         pass.label, b.name, b.kind));
-                resource = std_res;
-            }
-            if (resource == "frame") vk::write_uniform_buffer(ctx_, set, b.binding, *frame_);
-            else if (resource == "scene") vk::write_uniform_buffer(ctx_, set, b.binding, *scene_);
-            else if (resource == "params") vk::write_uniform_buffer(ctx_, set, b.binding, *params_);
-            else if (resource == "counters") vk::write_storage_buffer(ctx_, set, b.binding, *counters_);
-            else if (auto buf = buffers_.find(resource); buf != buffers_.end())
-                vk::write_storage_buffer(ctx_, set, b.binding, *buf->second);
-            else {
-                auto img = images_.find(resource);
-                if (img == images_.end())
-                    throw std::runtime_error(fmt::format("pass {}: no image '{}'", pass.label, resource));
-                vk::write_storage_image(ctx_, set, b.binding, *img->second);
+        std::array<VkDescriptorSet, 2> sets{};
+        for (std::uint64_t parity = 0; parity < 2; ++parity) {
+            VkDescriptorSet set = sets[parity] = pool_->allocate(*prog.layout);
+            for (const auto& b : prog.manifest->bindings) {
+                std::string resource;
+                for (const auto& [name, res] : pass.bindings)
+                    if (name == b.name) resource = res;
+                if (resource.empty()) {
+                    const char* std_res = standard_resource(b.name);
+                    if (!std_res)
+                        throw std::runtime_error(fmt::format("pass {} binds '{}' ({}), which this runtime's frame graph "
+                                                             "does not provide: recompile the pack with this fgc",
+                                                             pass.label, b.name, b.kind));
+                    resource = std_res;
+                }
+                if (b.kind == "uniform_buffer" || b.kind == "storage_buffer") {
+                    vk::Buffer* buf = resolve_buffer(resource);
+                    if (!buf) throw std::runtime_error(fmt::format("pass {}: no buffer '{}'", pass.label, resource));
+                    if (b.kind == "uniform_buffer") vk::write_uniform_buffer(ctx_, set, b.binding, *buf);
+                    else vk::write_storage_buffer(ctx_, set, b.binding, *buf);
+                } else {
+                    vk::StorageImage* img = resolve_image(resource, parity);
+                    if (!img) throw std::runtime_error(fmt::format("pass {}: no image '{}'", pass.label, resource));
+                    vk::write_storage_image(ctx_, set, b.binding, *img);
+                }
             }
         }
-        sets_.push_back(set);
+        sets_.push_back(sets);
     }
 }
 
@@ -205,72 +262,106 @@ bool FrameExecutor::set_param(const std::string& name, const Constant& value) {
     return true;
 }
 
-FrameStats FrameExecutor::run() {
-    FrameStats stats;
-    std::fill_n(counters_->data(), counters_->size(), std::byte{0});
-    counters_->flush();
-    bool timing = ctx_.timestamps_supported();
-    std::unique_ptr<vk::GpuTimer> timer;
-    if (timing) timer = std::make_unique<vk::GpuTimer>(ctx_, static_cast<std::uint32_t>(graph_.passes().size() + 2));
-    vk::OneShot shot(ctx_);
-    VkCommandBuffer cmd = shot.cmd();
-    if (timer) timer->reset(cmd);
+namespace {
+
+// Everything a pass may do, as the first and second scope of the barrier between two batches: a
+// later pass may read (also as indirect dispatch sizes) or overwrite what an earlier one wrote.
+const vk::Access kPassAccess{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT};
+
+// Persistent lanes: enough workgroups to keep the device full and the queue's refills rare, about
+// this many pixels per lane on average.
+constexpr std::uint64_t kPixelsPerPersistentLane = 16;
+
+std::array<std::uint32_t, 3> group_count(const FramePass& pass, const ManifestPass& mp) {
+    if (pass.persistent_lanes) {
+        std::uint64_t pixels = std::uint64_t(pass.invocations[0]) * pass.invocations[1] * pass.invocations[2];
+        std::uint64_t lanes = std::uint64_t(mp.local_size[0]) * mp.local_size[1] * mp.local_size[2];
+        return {static_cast<std::uint32_t>(std::max<std::uint64_t>(1, (pixels + lanes * kPixelsPerPersistentLane - 1) /
+                                                                           (lanes * kPixelsPerPersistentLane))),
+                1, 1};
+    }
+    std::array<std::uint32_t, 3> groups{};
+    for (int i = 0; i < 3; ++i) groups[i] = (pass.invocations[i] + mp.local_size[i] - 1) / std::max(1u, mp.local_size[i]);
+    return groups;
+}
+
+}  // namespace
+
+void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
     if (!images_initialised_) {
-        for (auto& [_, img] : images_)
-            img->transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::none, vk::access::compute_read_write);
+        for (auto& [_, versions] : images_)
+            for (auto& img : versions)
+                img->transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::none, vk::access::compute_read_write);
         images_initialised_ = true;
     }
+    // What earlier frames (earlier submissions) wrote or read, before this frame touches it again:
+    // history images are read, every other image is overwritten.
+    vk::memory_barrier(cmd, {kPassAccess.stage | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kPassAccess.access | VK_ACCESS_2_TRANSFER_READ_BIT},
+                       {kPassAccess.stage | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kPassAccess.access | VK_ACCESS_2_TRANSFER_WRITE_BIT});
     for (const auto& b : graph_.buffers())
         if (!b.reset.empty())
             vkCmdUpdateBuffer(cmd, buffers_.at(b.name)->handle(), 0, b.reset.size() * 4, b.reset.data());
     vk::transfer_to_compute_barrier(cmd);
     if (timer) timer->begin(cmd, "frame");
-    for (std::size_t i = 0; i < graph_.passes().size(); ++i) {
-        const auto& pass = graph_.passes()[i];
-        const Program& prog = programs_.at(pass.program);
-        if (timer) timer->begin(cmd, pass.timer);
-        std::vector<std::byte> push(prog.manifest->push_constant_size, std::byte{0});
-        if (!push.empty()) std::memcpy(push.data(), pass.push.data(), std::min(push.size(), pass.push.size() * 4));
-        if (pass.indirect.empty())
-            prog.pipeline->dispatch(cmd, sets_[i], {pass.groups[0], pass.groups[1], pass.groups[2]}, push);
-        else
-            prog.pipeline->dispatch_indirect(cmd, sets_[i], buffers_.at(pass.indirect)->handle(), 0, push);
-        if (timer) timer->end(cmd, pass.timer);
-        // Every pass may read what the one before wrote, also as indirect dispatch sizes.
-        vk::memory_barrier(cmd, vk::access::compute_write,
-                           {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
+    for (std::size_t batch = 0; batch < batches_.size(); ++batch) {
+        if (batch > 0) vk::memory_barrier(cmd, kPassAccess, kPassAccess);
+        for (std::size_t i : batches_[batch]) {
+            const auto& pass = graph_.passes()[i];
+            const Program& prog = programs_.at(pass.program);
+            VkDescriptorSet set = sets_[i][frames_run_ % 2];
+            if (timer) timer->begin(cmd, pass.timer);
+            if (pass.indirect.empty()) {
+                auto g = group_count(pass, *prog.manifest);
+                prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
+            } else {
+                prog.pipeline->dispatch_indirect(cmd, set, buffers_.at(pass.indirect)->handle(), 0, pass.push);
+            }
+            if (timer) timer->end(cmd, pass.timer);
+        }
     }
     if (timer) timer->end(cmd, "frame");
     vk::compute_to_host_barrier(cmd);
+}
+
+FrameStats FrameExecutor::run() {
+    FrameStats stats;
+    std::fill_n(counters_->data(), counters_->size(), std::byte{0});
+    counters_->flush();
+    std::unique_ptr<vk::GpuTimer> timer;
+    if (ctx_.timestamps_supported())
+        timer = std::make_unique<vk::GpuTimer>(ctx_, static_cast<std::uint32_t>(graph_.passes().size() + 2));
+    vk::OneShot shot(ctx_);
+    if (timer) timer->reset(shot.cmd());
+    record(shot.cmd(), timer.get());
     shot.submit_and_wait();
+    ++frames_run_;
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();
     const auto* counts = reinterpret_cast<const std::uint32_t*>(counters_->data());
     std::uint64_t total = 0;
     for (std::size_t i = 0; i < graph_.counter_groups().size(); ++i) {
-        stats.evaluations[graph_.counter_groups()[i]] = counts[i];
-        total += counts[i];
+        const std::string& group = graph_.counter_groups()[i];
+        stats.evaluations[group] = counts[3 * i];
+        total += counts[3 * i];
+        if (counts[3 * i + 2] > 0) stats.lanes[group] = {counts[3 * i + 1], counts[3 * i + 2]};
     }
     stats.evaluations_per_pixel = static_cast<double>(total) / (2.0 * graph_.width * graph_.height);
     return stats;
 }
 
 std::vector<std::byte> FrameExecutor::download(const std::string& image) const {
-    auto it = images_.find(image);
-    if (it == images_.end()) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", image));
-    return it->second->download();
+    // The frame just run has frames_run_ - 1's parity.
+    vk::StorageImage* img = resolve_image(image, frames_run_ + 1);
+    if (!img) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", image));
+    return img->download();
 }
 
-}  // namespace fg
-
-namespace fg {
-
 vk::StorageImage& FrameExecutor::image(const std::string& name) const {
-    auto it = images_.find(name);
-    if (it == images_.end()) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", name));
-    return *it->second;
+    vk::StorageImage* img = resolve_image(name, frames_run_ + 1);
+    if (!img) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", name));
+    return *img;
 }
 
 }  // namespace fg

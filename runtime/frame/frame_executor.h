@@ -1,8 +1,9 @@
 #pragma once
 // Runs a FrameGraph on Vulkan: makes a compute pipeline per pack program (with the pack's knob
 // values and any overrides as specialization constants), allocates exactly the images the graph
-// declares, binds each pass's resources by name, and records the passes with barriers and
-// timestamps.
+// declares (two of each history image), binds each pass's resources by name, checks every binding
+// and push constant against the shader's reflection, and records the graph's batches with a
+// barrier between one batch and the next, and timestamps.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -19,6 +20,10 @@
 #include "vk/image.h"
 
 namespace fg {
+
+namespace vk {
+class GpuTimer;
+}
 
 // SIMD lanes of a marching pass group, counted with subgroup ballots in the counting frame: every
 // iteration of a marching loop adds its subgroup's size to `total` and its lanes that evaluate to `busy`.
@@ -37,7 +42,8 @@ struct FrameStats {
 class FrameExecutor {
 public:
     // Throws std::runtime_error with a clear message for a pack that does not fit this runtime
-    // (a missing binding, a knob out of range, a uniform block of another size).
+    // (a missing binding, a knob out of range, a uniform block or push constant of another size,
+    // a binding the pass does not declare as the shader uses it).
     FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph);
     ~FrameExecutor();
 
@@ -46,10 +52,12 @@ public:
     bool set_param(const std::string& name, const Constant& value);
 
     FrameStats run();
+    // An image as the last frame left it; "<name>.previous" is a history image's frame before.
     std::vector<std::byte> download(const std::string& image) const;
     // For backends that copy a result on the GPU (an OpenXR swapchain, a window).
     vk::StorageImage& image(const std::string& name) const;
     const FrameGraph& graph() const { return graph_; }
+    std::uint64_t frames_run() const { return frames_run_; }
 
 private:
     struct Program {
@@ -58,20 +66,27 @@ private:
         const ManifestPass* manifest = nullptr;
     };
     void make_programs(const Pack& pack);
+    void check_declarations() const;
     void make_resources();
     void make_descriptor_sets();
+    // The image a resource name means in a frame of this parity (history images alternate).
+    vk::StorageImage* resolve_image(const std::string& name, std::uint64_t frame) const;
+    vk::Buffer* resolve_buffer(const std::string& name) const;
+    void record(VkCommandBuffer cmd, vk::GpuTimer* timer);
 
     const vk::Context& ctx_;
     const PackManifest manifest_;
     FrameGraph graph_;
+    std::vector<std::vector<std::size_t>> batches_;
     std::map<std::string, Program> programs_;
-    std::map<std::string, std::unique_ptr<vk::StorageImage>> images_;
+    std::map<std::string, std::vector<std::unique_ptr<vk::StorageImage>>> images_;   // two for history images
     std::map<std::string, std::unique_ptr<vk::Buffer>> buffers_;
     std::unique_ptr<vk::Buffer> frame_, scene_, params_, counters_;
     std::unique_ptr<vk::DescriptorPool> pool_;
-    std::vector<VkDescriptorSet> sets_;                 // one per pass
+    std::vector<std::array<VkDescriptorSet, 2>> sets_;   // per pass, per frame parity
     std::vector<std::byte> params_bytes_;
     bool images_initialised_ = false;
+    std::uint64_t frames_run_ = 0;
 };
 
 // The specialization constants of a pack with overrides applied: the manifest's values, then

@@ -1,10 +1,11 @@
 #include "frame_graph.h"
 
 #include <algorithm>
+#include <map>
 #include <fmt/format.h>
 #include <stdexcept>
 
-#include "graph/scene_settings.h"
+#include "frame_passes.h"
 
 namespace fg {
 
@@ -36,7 +37,30 @@ const char* image_format_name(ImageFormat f) {
     return "?";
 }
 
+std::uint32_t bytes_per_pixel(ImageFormat f) {
+    return f == ImageFormat::RG32F || f == ImageFormat::RGBA16F ? 8 : 4;
+}
+
+std::string previous(const std::string& image) { return image + ".previous"; }
+
 const char* view_name(int view) { return view == kLeftView ? "left" : view == kRightView ? "right" : "centre"; }
+
+void FramePass::bind(const std::string& binding, const std::string& resource, Access access) {
+    bindings.emplace_back(binding, resource);
+    auto add = [&](std::vector<std::string>& list) {
+        if (std::find(list.begin(), list.end(), resource) == list.end()) list.push_back(resource);
+    };
+    if (access != Access::Write) add(reads);
+    if (access != Access::Read) add(writes);
+}
+
+bool FramePass::reads_resource(const std::string& r) const {
+    return std::find(reads.begin(), reads.end(), r) != reads.end() || indirect == r;
+}
+
+bool FramePass::writes_resource(const std::string& r) const {
+    return std::find(writes.begin(), writes.end(), r) != writes.end();
+}
 
 const FrameImage* FrameGraph::find_image(const std::string& name) const {
     for (const auto& i : images_)
@@ -44,33 +68,47 @@ const FrameImage* FrameGraph::find_image(const std::string& name) const {
     return nullptr;
 }
 
+const FrameBuffer* FrameGraph::find_buffer(const std::string& name) const {
+    for (const auto& b : buffers_)
+        if (b.name == name) return &b;
+    return nullptr;
+}
+
 void FrameGraph::add_image(FrameImage image) {
-    if (!find_image(image.name)) images_.push_back(std::move(image));
+    if (const FrameImage* same = find_image(image.name)) {
+        if (same->width != image.width || same->height != image.height || same->format != image.format ||
+            same->history != image.history)
+            throw std::logic_error(fmt::format("the frame graph's image {} is {}x{} {}, and a pass asks for {}x{} {} under "
+                                               "the same name",
+                                               image.name, same->width, same->height, image_format_name(same->format),
+                                               image.width, image.height, image_format_name(image.format)));
+        return;
+    }
+    if (find_buffer(image.name)) throw std::logic_error(fmt::format("{} names a buffer and an image", image.name));
+    images_.push_back(std::move(image));
 }
 
 void FrameGraph::add_buffer(FrameBuffer buffer) {
-    for (const auto& b : buffers_)
-        if (b.name == buffer.name) return;
+    if (const FrameBuffer* same = find_buffer(buffer.name)) {
+        if (same->size != buffer.size || same->reset != buffer.reset)
+            throw std::logic_error(fmt::format("the frame graph's buffer {} is {} bytes, and a pass asks for {} under the "
+                                               "same name",
+                                               buffer.name, same->size, buffer.size));
+        return;
+    }
+    if (find_image(buffer.name)) throw std::logic_error(fmt::format("{} names an image and a buffer", buffer.name));
     buffers_.push_back(std::move(buffer));
 }
 
 void FrameGraph::add_pass(FramePass pass) { passes_.push_back(std::move(pass)); }
 
-void FrameGraph::add_pixel_pass(FramePass pass, int view) {
-    bool foveated = settings.foveation > 0.0 && view != kCentreView;
-    if (foveated) {
-        FramePass periphery = pass;
-        periphery.label += ".periphery";
-        periphery.push.push_back(2);
-        periphery.groups[0] = (pass.groups[0] + 1) / 2;
-        periphery.groups[1] = (pass.groups[1] + 1) / 2;
-        pass.push.push_back(1);
-        add_pass(std::move(pass));
-        add_pass(std::move(periphery));
-        return;
-    }
-    pass.push.push_back(1);
-    add_pass(std::move(pass));
+void FrameGraph::keep_for_next_frame(const std::string& image) {
+    for (auto& i : images_)
+        if (i.name == image) {
+            i.history = true;
+            return;
+        }
+    throw std::logic_error(fmt::format("the frame graph has no image {} to keep", image));
 }
 
 std::int32_t FrameGraph::counter_slot(const std::string& group) {
@@ -80,32 +118,54 @@ std::int32_t FrameGraph::counter_slot(const std::string& group) {
     return static_cast<std::int32_t>(counter_groups_.size() - 1);
 }
 
-namespace {
-
-void require_pass(const PackManifest& manifest, const char* program) {
-    if (!manifest.find_pass(program))
-        throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", program));
+std::vector<int> FrameGraph::output_views() const {
+    if (is_mono(settings.projection)) return {kCentreView};
+    return {kLeftView, kRightView};
 }
 
-// Panoramas run only what their rays allow. Equirect has one eye at the head's centre: the centre
-// view. ODS moves each eye with every column, so there is no centre eye to reproject from: each
-// eye is cone-marched on its own, its cones widened by how far the eyes of a block sit apart
-// (fg_origin_spread). Reprojection asked for becomes per-eye cone marching; naive stays naive.
-void add_panorama_passes(FrameGraph& g, const PackManifest& manifest) {
-    std::vector<int> views = is_mono(g.settings.projection) ? std::vector<int>{kCentreView}
-                                                             : std::vector<int>{kLeftView, kRightView};
-    bool naive = g.settings.stereo == StereoMode::Naive;
-    require_pass(manifest, naive ? "naive" : "conemarch");
-    for (int view : views) {
-        if (naive) add_naive_passes(g, view);
-        else add_conemarch_passes(g, view);
+std::vector<std::vector<std::size_t>> FrameGraph::batches() const {
+    // Each pass goes one batch after the latest pass it depends on: the last writer of what it
+    // reads or writes, and every reader since that write of what it writes.
+    struct Seen {
+        std::size_t last_write_batch = 0;
+        bool written = false;
+        std::size_t last_read_batch = 0;
+        bool read = false;
+    };
+    std::map<std::string, Seen> seen;
+    std::vector<std::size_t> batch_of(passes_.size(), 0);
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < passes_.size(); ++i) {
+        const FramePass& p = passes_[i];
+        std::size_t b = 0;
+        auto after = [&](std::size_t batch) { b = std::max(b, batch + 1); };
+        std::vector<std::string> touched = p.reads;
+        if (!p.indirect.empty()) touched.push_back(p.indirect);
+        touched.insert(touched.end(), p.writes.begin(), p.writes.end());
+        for (const auto& r : touched) {
+            const Seen& s = seen[r];
+            if (s.written) after(s.last_write_batch);
+            if (p.writes_resource(r) && s.read) after(s.last_read_batch);
+        }
+        batch_of[i] = b;
+        for (const auto& r : touched) {
+            Seen& s = seen[r];
+            if (p.writes_resource(r)) {
+                s.written = true;
+                s.last_write_batch = b;
+                s.read = false;
+                s.last_read_batch = 0;
+            } else {
+                s.read = true;
+                s.last_read_batch = std::max(s.last_read_batch, b);
+            }
+        }
+        count = std::max(count, b + 1);
     }
-    for (int view : views) add_shade_pass(g, view);
-    if (g.has_post)
-        for (int view : views) add_post_pass(g, view);
+    std::vector<std::vector<std::size_t>> out(count);
+    for (std::size_t i = 0; i < passes_.size(); ++i) out[batch_of[i]].push_back(i);
+    return out;
 }
-
-}  // namespace
 
 FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& settings, std::uint32_t centre_width,
                              std::uint32_t centre_height) {
@@ -118,52 +178,38 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.settings.camera_relative = manifest.precision == "double";
     if (g.settings.foveation < 0.0) {
         // As the scene says: its foveation block, or none.
-        Diagnostics ignore;
-        auto scene = parse_scene_settings(&manifest.scene, "/scene", ignore);
-        g.settings.foveation = scene.foveation ? scene.foveation->inner_radius : 0.0;
-        if (scene.foveation) g.settings.foveation_blend = scene.foveation->blend;
+        const auto& foveation = manifest.scene.foveation;
+        g.settings.foveation = foveation ? foveation->inner_radius : 0.0;
+        if (foveation) g.settings.foveation_blend = foveation->blend;
     }
-    if (settings.projection != Projection::Perspective) {
-        // The lens mask and foveation are the headset's: a panorama has neither lens nor gaze.
+    if (g.is_panorama()) {
+        // The lens mask and foveation are the headset's: a panorama has neither lens nor gaze. ODS
+        // moves each eye with every column, so there is no centre eye to reproject from: each view
+        // is cone-marched on its own (fg_origin_spread widens its cones); naive stays naive.
         g.settings.lens_mask = false;
         g.settings.foveation = 0.0;
+        if (g.settings.stereo == StereoMode::Reproject) g.settings.stereo = StereoMode::PerEye;
     }
     g.effects = manifest.effects;
     g.has_post = manifest.find_pass("post") != nullptr;
     g.manifest_has_tail = manifest.find_pass("tail") != nullptr;
-    if (const auto* tail = manifest.find_spec("tail_after")) {
-        auto it = settings.knobs.find("tail_after");
-        g.tail_after = static_cast<std::uint32_t>(it != settings.knobs.end() ? it->second : tail->value);
+    auto knob = [&](const char* name) {
+        auto it = settings.knobs.find(name);
+        const auto* spec = manifest.find_spec(name);
+        return it != settings.knobs.end() ? it->second : spec ? spec->value : 0.0;
+    };
+    g.tail_after = static_cast<std::uint32_t>(knob("tail_after"));
+    g.persistent_lanes = knob("persistent_lanes") != 0.0 && manifest.find_spec("persistent_lanes");
+    if (g.persistent_lanes && g.tail_after > 0) {
+        // Persistent lanes refill every lane continuously: the tail pass's compaction has nothing
+        // left to do, and its deferral would only hand pixels to a pass that is not there.
+        g.tail_after = 0;
+        g.settings.knobs["tail_after"] = 0.0;
     }
-    auto require = [&](const char* program) { require_pass(manifest, program); };
-    require("shade");
-    if (settings.projection != Projection::Perspective) {
-        add_panorama_passes(g, manifest);
-        return g;
-    }
-    switch (settings.stereo) {
-        case StereoMode::Naive:
-            require("naive");
-            for (int eye : {kLeftView, kRightView}) add_naive_passes(g, eye);
-            break;
-        case StereoMode::PerEye:
-            require("conemarch");
-            for (int eye : {kLeftView, kRightView}) add_conemarch_passes(g, eye);
-            break;
-        case StereoMode::Reproject:
-            require("conemarch");
-            require("reproject");
-            add_conemarch_passes(g, kCentreView);
-            for (int eye : {kLeftView, kRightView}) add_reproject_pass(g, eye);
-            break;
-    }
-    for (int eye : {kLeftView, kRightView}) add_shade_pass(g, eye);
-    if (g.has_post)
-        for (int eye : {kLeftView, kRightView}) add_post_pass(g, eye);
-    if (g.settings.foveation > 0.0) {
-        require("fovea");
-        for (int eye : {kLeftView, kRightView}) add_fovea_pass(g, eye);
-    }
+    for (const auto& kind : frame_pass_kinds()) kind.add(g);
+    for (const auto& p : g.passes_)
+        if (!manifest.find_pass(p.program))
+            throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", p.program));
     return g;
 }
 
@@ -185,24 +231,26 @@ std::string FrameGraph::describe() const {
     std::size_t bytes = 0;
     s += fmt::format("images and buffers ({}):\n", images_.size() + buffers_.size());
     for (const auto& i : images_) {
-        std::size_t px = static_cast<std::size_t>(i.width) * i.height;
-        std::size_t bpp = i.format == ImageFormat::R32F ? 4 : i.format == ImageFormat::RGBA8 ? 4 : 8;
-        if (i.format == ImageFormat::RGBA16F) bpp = 8;
-        bytes += px * bpp;
-        s += fmt::format("  {:<16} {:>5}x{:<5} {:<8} {}\n", i.name, i.width, i.height, image_format_name(i.format), i.about);
+        bytes += static_cast<std::size_t>(i.width) * i.height * bytes_per_pixel(i.format) * (i.history ? 2 : 1);
+        s += fmt::format("  {:<16} {:>5}x{:<5} {:<8} {}{}\n", i.name, i.width, i.height, image_format_name(i.format), i.about,
+                         i.history ? " (kept for the next frame)" : "");
     }
     for (const auto& b : buffers_) {
         bytes += b.size;
         s += fmt::format("  {:<16} {:>11} B        {}\n", b.name, b.size, b.about);
     }
     s += fmt::format("  ({:.1f} MiB)\n", static_cast<double>(bytes) / (1024.0 * 1024.0));
-    s += fmt::format("passes ({}):\n", passes_.size());
-    for (const auto& p : passes_) {
-        std::string groups = p.indirect.empty() ? fmt::format("{:>4}x{:<4}", p.groups[0], p.groups[1])
-                                                : fmt::format("{:<9}", "indirect");
-        s += fmt::format("  {:<20} {:<10} {} reads [{}] writes [{}]\n", p.label, p.program, groups,
-                         fmt::join(p.reads, ", "), fmt::join(p.writes, ", "));
-    }
+    auto order = batches();
+    s += fmt::format("passes ({}, {} barriers):\n", passes_.size(), order.empty() ? 0 : order.size() - 1);
+    for (std::size_t b = 0; b < order.size(); ++b)
+        for (std::size_t i : order[b]) {
+            const FramePass& p = passes_[i];
+            std::string dispatch = !p.indirect.empty() ? std::string("indirect")
+                                                       : fmt::format("{}x{}{}", p.invocations[0], p.invocations[1],
+                                                                     p.persistent_lanes ? " queue" : "");
+            s += fmt::format("  {:>2} {:<27} {:<10} {:<10} reads [{}] writes [{}]\n", b, p.label, p.program, dispatch,
+                             fmt::join(p.reads, ", "), fmt::join(p.writes, ", "));
+        }
     return s;
 }
 

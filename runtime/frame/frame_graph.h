@@ -1,12 +1,21 @@
 #pragma once
 // The frame graph as data: the images and passes one stereo frame needs, for this pack and these
-// settings, and nothing else. Each pass says which pack program it runs, which resource each of
-// its shader bindings gets, what it reads and writes, and its push constants. `describe()` prints
-// it (fgplay render --describe), so "only what the scene calls for" can be checked by reading.
+// settings, and nothing else. Each pass binds resources by the shader's binding names and declares
+// what it reads and writes; those declarations do the work (as Granite's render graph bakes its
+// own): `batches()` orders the passes into groups separated by a barrier only where a hazard
+// exists, the executor checks every binding against the shader's reflected access, and an image
+// declared as history lives into the next frame. `describe()` prints it (fgplay render --describe).
+//
+// Adding a pass: its shader template (shaders/<name>.comp) and one builder file (<name>_pass.cpp)
+// with `void add_<name>_passes(FrameGraph&)`, listed once in frame_passes.cpp.
+#include <array>
 #include <cstdint>
+#include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "frame/shaders/gpu_interface.h"
 #include "frame_settings.h"
 #include "pack/manifest.h"
 
@@ -14,15 +23,22 @@ namespace fg {
 
 enum class ImageFormat { R32F, RG32F, RGBA16F, RGBA8 };
 const char* image_format_name(ImageFormat f);
+std::uint32_t bytes_per_pixel(ImageFormat f);
 
 struct FrameImage {
     std::string name;                  // "depth.left"
     std::uint32_t width = 0, height = 0;
     ImageFormat format = ImageFormat::R32F;
     std::string about;
+    // Kept into the next frame: passes read the previous frame's contents as "<name>.previous"
+    // (the executor keeps two images and swaps them after every frame).
+    bool history = false;
 };
 
-// A storage buffer the graph owns, e.g. a tail queue; `reset` words are written at the start of
+// The name under which passes read a history image's previous frame.
+std::string previous(const std::string& image);
+
+// A storage buffer the graph owns, e.g. a work queue; `reset` words are written at the start of
 // every frame.
 struct FrameBuffer {
     std::string name;
@@ -31,45 +47,93 @@ struct FrameBuffer {
     std::string about;
 };
 
+enum class Access { Read, Write, ReadWrite };
+
 struct FramePass {
     std::string label;                 // unique: "conemarch.left.L2"
     std::string program;               // the pack pass it runs: "conemarch"
-    std::string timer;                 // GPU time is summed per timer group: "conemarch"
+    std::string timer;                 // GPU time is summed per timer group: "march"
     std::vector<std::pair<std::string, std::string>> bindings;   // shader binding name -> resource
-    std::vector<std::string> reads, writes;                       // images, for barriers and describe()
-    std::vector<std::int32_t> push;                               // push-constant words
-    std::uint32_t groups[3] = {1, 1, 1};
+    std::vector<std::string> reads, writes;                       // resources, for barriers and describe()
+    std::vector<std::byte> push;                                  // the push-constant struct's bytes
+    // How it is dispatched: a grid of invocations (the executor divides by the shader's local
+    // size), or group counts held by a buffer. With persistent lanes the shader takes its pixels
+    // from a queue, and the executor dispatches a fixed share of the grid's groups instead.
+    std::array<std::uint32_t, 3> invocations{1, 1, 1};
+    bool persistent_lanes = false;
+    std::string indirect;              // buffer whose first three words are the group counts (read)
     std::int32_t counter_slot = -1;    // evaluation counter slot, -1 if the pass evaluates nothing
-    std::string indirect;              // buffer whose first three words are the group counts
+
+    // Binds `resource` to the shader's `binding` and declares the access.
+    void bind(const std::string& binding, const std::string& resource, Access access);
+    template <class Push>
+    void set_push(const Push& p) {
+        static_assert(std::is_trivially_copyable_v<Push>);
+        push.resize(sizeof p);
+        std::memcpy(push.data(), &p, sizeof p);
+    }
+    bool reads_resource(const std::string& r) const;
+    bool writes_resource(const std::string& r) const;
 };
 
 class FrameGraph {
 public:
+    // Throws std::runtime_error when the pack lacks a pass the graph needs (recompile it).
     static FrameGraph build(const PackManifest& manifest, const FrameSettings& settings, std::uint32_t centre_width,
                             std::uint32_t centre_height);
 
     const std::vector<FrameImage>& images() const { return images_; }
     const std::vector<FrameBuffer>& buffers() const { return buffers_; }
     const std::vector<FramePass>& passes() const { return passes_; }
-    // Counter slots: one per pass program that marches ("conemarch", "reproject", "naive", "shade").
+    std::vector<FramePass>& passes() { return passes_; }
+    // Counter slots: one per group of marching passes ("march.L0", "reproject", "shade"...).
     const std::vector<std::string>& counter_groups() const { return counter_groups_; }
     const FrameImage* find_image(const std::string& name) const;
+    const FrameBuffer* find_buffer(const std::string& name) const;
     std::string describe() const;
 
-    // Used by the pass builders (conemarch_pass.cpp ...).
+    // The passes in an order that keeps every declared dependency, grouped: the passes of a batch
+    // depend on none of each other, and a barrier separates one batch from the next. A pass that
+    // reads or writes what an earlier pass wrote, or writes what an earlier pass read, goes into a
+    // later batch; independent passes (the two eyes' levels) share one.
+    std::vector<std::vector<std::size_t>> batches() const;
+
+    // Used by the pass builders (conemarch_pass.cpp ...). Adding an image of a name already taken
+    // is fine if it is the same image (size and format), an error otherwise.
     void add_image(FrameImage image);
     void add_buffer(FrameBuffer buffer);
     void add_pass(FramePass pass);
-    // A full-resolution pass of an eye, whose last push word is the pixel stride: with foveation
-    // it runs as two dispatches, all pixels short of the periphery and every other pixel beyond.
-    void add_pixel_pass(FramePass pass, int view);
+    // Keeps an image into the next frame, where passes read it as previous(image).
+    void keep_for_next_frame(const std::string& image);
+    // A full-resolution pass of an eye, made by `make(stride)`: with foveation it runs as two
+    // dispatches, all pixels short of the periphery (stride 1) and every other pixel beyond (stride 2).
+    template <class Make>
+    void add_pixel_pass(int view, Make make) {
+        bool foveated = settings.foveation > 0.0 && view != FG_VIEW_CENTRE;
+        FramePass full = make(1);
+        full.invocations = {width, height, 1};
+        if (!foveated) {
+            add_pass(std::move(full));
+            return;
+        }
+        FramePass periphery = make(2);
+        periphery.label += ".periphery";
+        periphery.invocations = {(width + 1) / 2, (height + 1) / 2, 1};
+        add_pass(std::move(full));
+        add_pass(std::move(periphery));
+    }
     std::int32_t counter_slot(const std::string& group);
+
+    // The views whose images the frame outputs: both eyes, or the centre alone for a mono panorama.
+    std::vector<int> output_views() const;
+    bool is_panorama() const { return settings.projection != Projection::Perspective; }
 
     std::uint32_t width = 0, height = 0, centre_width = 0, centre_height = 0;
     FrameSettings settings;
     EffectSet effects;
     bool has_post = false;             // the pack has a post pass: shade writes HDR for it
     std::uint32_t tail_after = 0;      // the tail_after knob: > 0 adds compacted tail passes
+    bool persistent_lanes = false;     // the persistent_lanes knob (then there is no tail pass)
     bool manifest_has_tail = false;    // the pack has the tail program
 
 private:
@@ -79,16 +143,8 @@ private:
     std::vector<std::string> counter_groups_;
 };
 
-// Eyes and views as the shaders number them.
-inline constexpr int kLeftView = 0, kRightView = 1, kCentreView = 2;
+// Eyes and views as the shaders number them (gpu_interface.h).
+inline constexpr int kLeftView = FG_VIEW_LEFT, kRightView = FG_VIEW_RIGHT, kCentreView = FG_VIEW_CENTRE;
 const char* view_name(int view);
-
-// One builder per pass kind, each in its own file beside its shader template.
-void add_naive_passes(FrameGraph& g, int view);
-void add_conemarch_passes(FrameGraph& g, int view);
-void add_reproject_pass(FrameGraph& g, int view);
-void add_shade_pass(FrameGraph& g, int view);
-void add_post_pass(FrameGraph& g, int view);
-void add_fovea_pass(FrameGraph& g, int view);
 
 }  // namespace fg

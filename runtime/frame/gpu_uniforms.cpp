@@ -2,24 +2,24 @@
 
 #include <algorithm>
 
-#include "graph/scene_settings.h"
 #include "lens_mask.h"
 
 namespace fg {
 
 namespace {
-std::array<float, 4> v4(const glm::dvec3& v, double w = 0.0) {
+vec4 v4(const glm::dvec3& v, double w = 0.0) {
     return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(w)};
 }
+vec3 v3(const glm::dvec3& v) { return glm::vec3(v); }
 GpuView gpu_view(const View& v, bool lens_mask) {
     GpuView g{v4(v.origin), v4(v.right), v4(v.up), v4(v.forward),
               {static_cast<float>(v.fov.left), static_cast<float>(v.fov.right), static_cast<float>(v.fov.down),
                static_cast<float>(v.fov.up)},
-              {0.5f, 0.5f, 0.0f, 0.0f}};
+              {0.5f, 0.5f}, {0.0f, 0.0f}};
     if (lens_mask) {
         LensEllipse e = lens_ellipse(v);
-        g.lens = {static_cast<float>(e.centre_u), static_cast<float>(e.centre_v), static_cast<float>(e.radius_u),
-                  static_cast<float>(e.radius_v)};
+        g.lens_centre = {static_cast<float>(e.centre_u), static_cast<float>(e.centre_v)};
+        g.lens_radii = {static_cast<float>(e.radius_u), static_cast<float>(e.radius_v)};
     }
     return g;
 }
@@ -28,31 +28,35 @@ GpuView gpu_view(const View& v, bool lens_mask) {
 GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings, double time, double world_scale,
                         std::uint32_t frame_index) {
     GpuFrame f{};
-    f.views[0] = gpu_view(views.left, settings.lens_mask);
-    f.views[1] = gpu_view(views.right, settings.lens_mask);
-    f.views[2] = gpu_view(views.centre, false);   // the centre eye serves both lenses
+    f.views[FG_VIEW_LEFT] = gpu_view(views.left, settings.lens_mask);
+    f.views[FG_VIEW_RIGHT] = gpu_view(views.right, settings.lens_mask);
+    f.views[FG_VIEW_CENTRE] = gpu_view(views.centre, false);   // the centre eye serves both lenses
     const glm::dvec3 anchor = views.centre.origin;
     const glm::dvec3 hi = glm::dvec3(glm::vec3(anchor));
     f.anchor_hi = v4(hi);
     f.anchor_lo = v4(anchor - hi);
     if (settings.camera_relative) {
         // Float keeps the few digits that separate the eyes only once the camera is subtracted.
-        f.views[0].origin = v4(views.left.origin - anchor);
-        f.views[1].origin = v4(views.right.origin - anchor);
-        f.views[2].origin = v4(views.centre.origin - anchor);
+        f.views[FG_VIEW_LEFT].origin = v4(views.left.origin - anchor);
+        f.views[FG_VIEW_RIGHT].origin = v4(views.right.origin - anchor);
+        f.views[FG_VIEW_CENTRE].origin = v4(views.centre.origin - anchor);
     }
-    f.size = {views.left.width, views.left.height, views.centre.width, views.centre.height};
-    f.info = {frame_index, settings.cone_levels, 0, 0};
-    f.foveation = {static_cast<float>(std::max(settings.foveation, 0.0)), static_cast<float>(settings.foveation_blend),
-                   0.0f, 0.0f};
-    f.time = {static_cast<float>(time), static_cast<float>(world_scale), static_cast<float>(views.ipd), 0.0f};
-    f.pixel = {static_cast<float>(views.pixel_half_diagonal), static_cast<float>(views.pixel_tan), 0.0f, 0.0f};
+    f.eye_size = {views.left.width, views.left.height};
+    f.centre_size = {views.centre.width, views.centre.height};
+    f.frame_index = frame_index;
+    f.cone_levels = settings.cone_levels;
+    f.projection = static_cast<uint>(settings.projection);
+    f.fovea_radius = static_cast<float>(std::max(settings.foveation, 0.0));
+    f.fovea_blend = static_cast<float>(settings.foveation_blend);
+    f.seconds = static_cast<float>(time);
+    f.world_scale = static_cast<float>(world_scale);
+    f.ipd = static_cast<float>(views.ipd);
+    f.pixel_cone_tan = static_cast<float>(views.pixel_half_diagonal);
+    f.pixel_tan = static_cast<float>(views.pixel_tan);
     return f;
 }
 
-GpuScene make_gpu_scene(const nlohmann::json& scene_json) {
-    Diagnostics ignore;  // the pack reader has already checked the settings
-    SceneSettings s = parse_scene_settings(&scene_json, "/scene", ignore);
+GpuScene make_gpu_scene(const SceneSettings& s) {
     GpuScene g{};
     g.light_dir = v4(s.light.direction);
     g.light_color = v4(s.light.color);
@@ -62,14 +66,20 @@ GpuScene make_gpu_scene(const nlohmann::json& scene_json) {
     g.albedo = v4(s.albedo);
     g.bg_top = v4(s.background.top);
     g.bg_bottom = v4(s.background.bottom);
-    if (s.fog) g.fog = v4(s.fog->color, s.fog->density);
-    if (s.glow) g.glow = v4(s.glow->color * s.glow->intensity, s.glow->falloff);
-    g.bounds = v4(s.bounds_center, s.bounds_radius);
-    g.bounds_lo = v4(s.bounds_center - glm::dvec3(glm::vec3(s.bounds_center)));
-    g.misc = {static_cast<float>(s.exposure), static_cast<float>(s.max_distance),
-              s.vignette ? static_cast<float>(s.vignette->strength) : 0.0f,
-              s.foveation ? static_cast<float>(s.foveation->inner_radius) : 1.0f};
-    g.misc2 = {s.foveation ? static_cast<float>(s.foveation->blend) : 0.0f, 0.0f, 0.0f, 0.0f};
+    if (s.fog) {
+        g.fog_color = v3(s.fog->color);
+        g.fog_density = static_cast<float>(s.fog->density);
+    }
+    if (s.glow) {
+        g.glow_color = v3(s.glow->color * s.glow->intensity);
+        g.glow_falloff = static_cast<float>(s.glow->falloff);
+    }
+    g.bounds_centre = v3(s.bounds_center);
+    g.bounds_radius = static_cast<float>(s.bounds_radius);
+    g.bounds_centre_lo = v3(s.bounds_center - glm::dvec3(glm::vec3(s.bounds_center)));
+    g.exposure = static_cast<float>(s.exposure);
+    g.far_limit = static_cast<float>(s.max_distance);
+    g.vignette = s.vignette ? static_cast<float>(s.vignette->strength) : 0.0f;
     return g;
 }
 

@@ -2,8 +2,6 @@
 
 #include <cstring>
 
-#include "graph/scene_settings.h"
-
 namespace fg {
 
 namespace {
@@ -26,15 +24,12 @@ HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, con
 }
 
 HeadPose HeadlessRenderer::scene_camera() const {
-    Diagnostics ignore;
-    auto s = parse_scene_settings(&pack_.manifest.scene, "/scene", ignore);
-    return look_at(s.camera.position, s.camera.target, s.camera.up);
+    const auto& camera = pack_.manifest.scene.camera;
+    return look_at(camera.position, camera.target, camera.up);
 }
 
 Fov HeadlessRenderer::scene_fov() const {
-    Diagnostics ignore;
-    auto s = parse_scene_settings(&pack_.manifest.scene, "/scene", ignore);
-    return Fov::symmetric(s.camera.fov_deg, static_cast<double>(frame_.width) / frame_.height);
+    return Fov::symmetric(pack_.manifest.scene.camera.fov_deg, static_cast<double>(frame_.width) / frame_.height);
 }
 
 StereoViews HeadlessRenderer::make_views(const HeadPose& head) const {
@@ -47,7 +42,6 @@ void HeadlessRenderer::set_world_scale(double world_scale) { stereo_.world_scale
 RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
     views_ = make_views(head);
     GpuFrame gpu = make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index);
-    gpu.info[2] = static_cast<std::uint32_t>(frame_.projection);
     executor_->set_frame(gpu);
     RenderedFrame out;
     out.stats = executor_->run();

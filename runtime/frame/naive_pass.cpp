@@ -1,27 +1,33 @@
-// The baseline tracer's place in the frame graph (shader: shaders/naive.comp).
+// The baseline tracer's place in the frame graph (shader: shaders/naive.comp): plain sphere tracing
+// of every output view, in naive stereo mode only.
 #include "frame_graph.h"
 
 namespace fg {
 
-void add_naive_passes(FrameGraph& g, int view) {
-    std::string eye = view_name(view);
-    g.add_image({"depth." + eye, g.width, g.height, ImageFormat::R32F, "hit distance or miss"});
-    FramePass p;
-    p.label = "naive." + eye;
-    p.program = "naive";
-    p.timer = "march";
-    p.bindings = {{"fg_depth", "depth." + eye}};
-    p.writes = {"depth." + eye};
-    if (g.effects.has(Effect::Glow)) {
-        g.add_image({"glow." + eye, g.width, g.height, ImageFormat::R32F, "closest approach along the ray"});
-        p.bindings.push_back({"fg_glow", "glow." + eye});
-        p.writes.push_back("glow." + eye);
+void add_naive_passes(FrameGraph& g) {
+    if (g.settings.stereo != StereoMode::Naive) return;
+    for (int view : g.output_views()) {
+        std::string eye = view_name(view);
+        g.add_image({"depth." + eye, g.width, g.height, ImageFormat::R32F, "hit distance or miss"});
+        bool glow = g.effects.has(Effect::Glow);
+        if (glow) g.add_image({"glow." + eye, g.width, g.height, ImageFormat::R32F, "closest approach along the ray"});
+        std::string lanes = "lanes." + eye;
+        g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each dispatch" : "(persistent lanes off)"});
+        std::int32_t slot = g.counter_slot("march");
+        g.add_pixel_pass(view, [&](int stride) {
+            FramePass p;
+            p.label = "naive." + eye;
+            p.program = "naive";
+            p.timer = "march";
+            p.bind("fg_depth", "depth." + eye, Access::Write);
+            if (glow) p.bind("fg_glow", "glow." + eye, Access::Write);
+            p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+            p.persistent_lanes = g.persistent_lanes;
+            p.counter_slot = slot;
+            p.set_push(NaivePush{view, slot, stride});
+            return p;
+        });
     }
-    p.counter_slot = g.counter_slot("march");
-    p.push = {view, p.counter_slot};
-    p.groups[0] = (g.width + 7) / 8;
-    p.groups[1] = (g.height + 7) / 8;
-    g.add_pixel_pass(std::move(p), view);
 }
 
 }  // namespace fg

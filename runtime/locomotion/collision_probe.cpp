@@ -49,7 +49,10 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
     pipeline_ = std::make_unique<vk::ComputePipeline>(ctx, pack.spirv.at("probe"),
                                                       std::vector<VkDescriptorSetLayout>{layout_->handle()},
                                                       pass->push_constant_size, specialization_for(pack.manifest, *pass, {}, false));
-    push_size_ = pass->push_constant_size;
+    if (pass->push_constant_size != sizeof(ProbePush))
+        throw std::runtime_error(fmt::format("the pack's probe pass takes {} bytes of push constants, this runtime pushes {}: "
+                                             "recompile the pack with this fgc",
+                                             pass->push_constant_size, sizeof(ProbePush)));
     pool_ = std::make_unique<vk::DescriptorPool>(ctx, static_cast<std::uint32_t>(kSlots), sizes);
 
     auto uniform = [&](std::size_t size) {
@@ -65,10 +68,10 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
     scene_->flush();
     params_->flush();
     // Normals from differences a little finer than the scene's size.
-    normal_step_ = std::max(1e-5, 1e-4 * static_cast<double>(scene.bounds[3]));
+    normal_step_ = std::max(1e-5, 1e-4 * static_cast<double>(scene.bounds_radius));
     // A double pack's taps are float offsets from an anchor at the probe: no 1e-5 floor, so a deep
     // zoom's bounds (2e-5 across) get normals on their own scale.
-    if (camera_relative_) normal_step_ = 1e-4 * static_cast<double>(scene.bounds[3]);
+    if (camera_relative_) normal_step_ = 1e-4 * static_cast<double>(scene.bounds_radius);
 
     VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -141,13 +144,9 @@ std::uint64_t CollisionProbe::submit(const std::vector<glm::dvec3>& points) {
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vk::check(vkBeginCommandBuffer(free->cmd, &bi), "vkBeginCommandBuffer");
     vk::memory_barrier(free->cmd, vk::access::host_write, vk::access::compute_read);
-    struct {
-        std::int32_t count;
-        float normal_step;
-    } push{static_cast<std::int32_t>(n), static_cast<float>(normal_step_)};
-    std::vector<std::byte> bytes(push_size_, std::byte{0});
-    std::memcpy(bytes.data(), &push, std::min<std::size_t>(sizeof push, bytes.size()));
-    pipeline_->dispatch(free->cmd, free->set, {1, 1, 1}, bytes);
+    const ProbePush push{static_cast<std::int32_t>(n), static_cast<float>(normal_step_)};
+    pipeline_->dispatch(free->cmd, free->set, {1, 1, 1},
+                        std::span<const std::byte>(reinterpret_cast<const std::byte*>(&push), sizeof push));
     vk::compute_to_host_barrier(free->cmd);
     vk::check(vkEndCommandBuffer(free->cmd), "vkEndCommandBuffer");
     ctx_.submit(free->cmd, free->fence);

@@ -68,7 +68,6 @@ private:
     std::unique_ptr<vk::Buffer> scene_, params_;
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     std::array<Slot, kSlots> slots_;
-    std::uint32_t push_size_ = 0;
     double normal_step_ = 1e-4;
     bool camera_relative_ = false;
     std::uint64_t next_ticket_ = 1;

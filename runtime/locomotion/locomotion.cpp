@@ -5,23 +5,11 @@
 
 namespace fg {
 
-LocomotionSettings locomotion_settings(const nlohmann::json& j) {
-    LocomotionSettings s;
-    if (!j.is_object()) return s;
-    auto number = [&](const char* key, double& out) {
-        if (auto it = j.find(key); it != j.end() && it->is_number() && it->get<double>() > 0.0) out = it->get<double>();
-    };
-    number("speed_per_distance", s.speed_per_distance);
-    number("max_speed", s.max_speed);
-    number("head_radius", s.head_radius);
-    return s;
-}
-
-Locomotion::Locomotion(const LocomotionSettings& settings, double world_scale)
-    : settings_(settings), world_scale_(world_scale) {}
+Locomotion::Locomotion(const LocomotionSettings& settings, double world_scale, double probe_latency_s)
+    : settings_(settings), world_scale_(world_scale), probe_latency_s_(probe_latency_s) {}
 
 std::vector<glm::dvec3> Locomotion::probe_points(const glm::dvec3& head, const glm::dvec3& velocity) const {
-    return {head, head + velocity * settings_.latency_s};
+    return {head, head + velocity * probe_latency_s_};
 }
 
 void Locomotion::on_probe(const ProbeResult& result) {

@@ -10,29 +10,22 @@
 #include <vector>
 
 #include <glm/glm.hpp>
-#include <nlohmann/json.hpp>
 
+#include "graph/scene_settings.h"
 #include "locomotion/collision_probe.h"
 
 namespace fg {
 
-struct LocomotionSettings {
-    double speed_per_distance = 1.0;   // 1/s: speed = this * distance to the nearest surface
-    double max_speed = 2.0;            // scene units per second per unit of world scale
-    // Metres (scene units per unit of world scale): the closest the head gets. More than half the
-    // distance between the eyes, so that neither eye enters the surface.
-    double head_radius = 0.05;
-    double latency_s = 0.05;           // how far ahead the second probe looks along the velocity
-};
-
-// From the graph's scene.locomotion: speed_per_distance, max_speed, head_radius (all optional).
-LocomotionSettings locomotion_settings(const nlohmann::json& scene_locomotion);
+// How late a probe's answer arrives, roughly: the look-ahead probe asks about where the head will
+// be after this long. The runtime's, not the scene's (the scene's limits are LocomotionSettings).
+inline constexpr double kProbeLatencyS = 0.05;
 
 class Locomotion {
 public:
-    Locomotion(const LocomotionSettings& settings, double world_scale);
+    // `settings`: the scene's limits (scene.locomotion in the graph).
+    Locomotion(const LocomotionSettings& settings, double world_scale, double probe_latency_s = kProbeLatencyS);
 
-    // Where to probe now: the head, and where the head will be after `latency_s` at `velocity`.
+    // Where to probe now: the head, and where the head will be after the probe latency at `velocity`.
     std::vector<glm::dvec3> probe_points(const glm::dvec3& head, const glm::dvec3& velocity) const;
     // The newest answers; older ones are forgotten.
     void on_probe(const ProbeResult& result);
@@ -60,6 +53,7 @@ public:
 private:
     LocomotionSettings settings_;
     double world_scale_ = 1.0;
+    double probe_latency_s_ = kProbeLatencyS;
     std::vector<ProbeSample> samples_;   // the empty balls (d > 0) that bound each step
     std::vector<ProbeSample> answers_;
     glm::dvec3 velocity_{0.0};

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <fstream>
 
+#include "common/json_fields.h"
+
 namespace fg {
 
 namespace {
@@ -19,19 +21,6 @@ double eased(Ease e, double s) {
     return s;
 }
 
-bool read_vec3(const nlohmann::json& j, const std::string& ptr, glm::dvec3& out, Diagnostics& diag) {
-    if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number()) {
-        diag.error("expected [x, y, z] numbers", ptr);
-        return false;
-    }
-    out = {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-    if (!std::isfinite(out.x) || !std::isfinite(out.y) || !std::isfinite(out.z)) {
-        diag.error("expected finite numbers", ptr);
-        return false;
-    }
-    return true;
-}
-
 // Uniform Catmull-Rom through p1 (s = 0) and p2 (s = 1), with the outer keys as tangent guides.
 glm::dvec3 catmull_rom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3, double s) {
     double s2 = s * s, s3 = s2 * s;
@@ -41,93 +30,55 @@ glm::dvec3 catmull_rom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dv
 }  // namespace
 
 std::optional<CameraPath> CameraPath::parse(const nlohmann::json& j, double default_world_scale, Diagnostics& diag) {
-    std::size_t errors = diag.error_count();
-    if (!j.is_object()) {
-        diag.error("a camera path is a JSON object", "");
-        return std::nullopt;
-    }
-    if (j.value("format", "") != "fractograph-camera-path")
-        diag.error("expected \"format\": \"fractograph-camera-path\"", "/format");
-    if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
-        diag.error("this fgplay reads camera path version 1", "/version");
+    JsonFieldReader r(diag);
+    if (!r.is_object(j, "")) return std::nullopt;
+    r.unknown_keys(j, "", {"format", "version", "fps", "interpolation", "keyframes"});
+    std::string format;
+    r.required(j, "format", "", format, Choices{"fractograph-camera-path"});
+    std::int64_t version = 0;
+    if (r.required(j, "version", "", version) && version != 1) r.error("this fgplay reads camera path version 1", "/version");
     CameraPath path;
-    if (j.contains("fps")) {
-        if (!j["fps"].is_number() || !(j["fps"].get<double>() > 0.0) || j["fps"].get<double>() > 10000.0)
-            diag.error("fps must be a number in (0, 10000]", "/fps");
-        else
-            path.fps_ = j["fps"].get<double>();
-    }
-    if (j.contains("interpolation")) {
-        std::string s = j["interpolation"].is_string() ? j["interpolation"].get<std::string>() : "";
-        if (s == "smooth" || s == "linear") path.smooth_ = s == "smooth";
-        else diag.error("interpolation is \"smooth\" or \"linear\"", "/interpolation");
-    }
-    if (!j.contains("keyframes") || !j["keyframes"].is_array() || j["keyframes"].empty()) {
-        diag.error("expected a non-empty array of keyframes", "/keyframes");
-        return std::nullopt;
-    }
-    const auto& keys = j["keyframes"];
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-        const auto& k = keys[i];
+    r.optional(j, "fps", "", path.fps_, NumberRange{0.0, 10000.0, true});
+    std::string interpolation;
+    if (r.optional(j, "interpolation", "", interpolation, Choices{"smooth", "linear"})) path.smooth_ = interpolation == "smooth";
+    const nlohmann::json* keys = r.array_field(j, "keyframes", "", true);
+    if (!keys) return std::nullopt;
+    if (keys->empty()) r.error("expected at least one keyframe", "/keyframes");
+    for (std::size_t i = 0; i < keys->size(); ++i) {
+        const auto& k = (*keys)[i];
         std::string ptr = fmt::format("/keyframes/{}", i);
-        if (!k.is_object()) {
-            diag.error("a keyframe is an object", ptr);
-            continue;
-        }
+        if (!r.is_object(k, ptr)) continue;
+        r.unknown_keys(k, ptr, {"time", "position", "target", "up", "orientation", "world_scale", "ease"}, "keyframe field");
         CameraKey key;
         key.world_scale = default_world_scale;
-        if (!k.contains("time") || !k["time"].is_number() || !std::isfinite(k["time"].get<double>()))
-            diag.error("expected a time in seconds", ptr + "/time");
-        else
-            key.time = k["time"].get<double>();
+        r.required(k, "time", ptr, key.time);
         if (!path.keys_.empty() && key.time <= path.keys_.back().time)
-            diag.error(fmt::format("times must increase: {} follows {}", key.time, path.keys_.back().time), ptr + "/time");
-        bool position_ok = k.contains("position") && read_vec3(k["position"], ptr + "/position", key.position, diag);
-        if (!k.contains("position")) diag.error("expected a position [x, y, z]", ptr + "/position");
+            r.error(fmt::format("times must increase: {} follows {}", key.time, path.keys_.back().time), ptr + "/time");
+        bool position_ok = r.required(k, "position", ptr, key.position);
         bool has_target = k.contains("target"), has_quat = k.contains("orientation");
-        if (has_target == has_quat)
-            diag.error("give either a target [x, y, z] or an orientation [w, x, y, z]", ptr);
-        if (has_target) {
-            glm::dvec3 t;
-            if (read_vec3(k["target"], ptr + "/target", t, diag)) {
-                if (position_ok && glm::length(t - key.position) < 1e-12) diag.error("the target is at the position", ptr + "/target");
-                key.target = t;
-            }
-            if (k.contains("up") && read_vec3(k["up"], ptr + "/up", key.up, diag) && glm::length(key.up) < 1e-12)
-                diag.error("up must not be zero", ptr + "/up");
+        if (has_target == has_quat) r.error("give either a target [x, y, z] or an orientation [w, x, y, z]", ptr);
+        if (glm::dvec3 t; has_target && r.required(k, "target", ptr, t)) {
+            if (position_ok && glm::length(t - key.position) < 1e-12) r.error("the target is at the position", ptr + "/target");
+            key.target = t;
         }
+        if (has_target && r.optional(k, "up", ptr, key.up) && glm::length(key.up) < 1e-12)
+            r.error("up must not be zero", ptr + "/up");
         if (has_quat) {
-            const auto& q = k["orientation"];
-            bool ok = q.is_array() && q.size() == 4;
-            for (std::size_t c = 0; ok && c < 4; ++c) ok = q[c].is_number() && std::isfinite(q[c].get<double>());
-            glm::dquat quat(ok ? q[0].get<double>() : 0.0, ok ? q[1].get<double>() : 0.0, ok ? q[2].get<double>() : 0.0,
-                            ok ? q[3].get<double>() : 0.0);
-            if (!ok || glm::length(quat) < 1e-9) diag.error("expected a non-zero quaternion [w, x, y, z]", ptr + "/orientation");
-            else key.orientation = glm::normalize(quat);
+            std::array<double, 4> wxyz{};
+            if (r.read_numbers(k["orientation"], ptr + "/orientation", wxyz)) {
+                glm::dquat quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
+                if (glm::length(quat) < 1e-9) r.error("expected a non-zero quaternion [w, x, y, z]", ptr + "/orientation");
+                else key.orientation = glm::normalize(quat);
+            }
         }
-        if (k.contains("world_scale")) {
-            if (!k["world_scale"].is_number() || !(k["world_scale"].get<double>() > 0.0) ||
-                !std::isfinite(k["world_scale"].get<double>()))
-                diag.error("world_scale must be a positive number", ptr + "/world_scale");
-            else
-                key.world_scale = k["world_scale"].get<double>();
-        }
-        if (k.contains("ease")) {
-            std::string e = k["ease"].is_string() ? k["ease"].get<std::string>() : "";
-            if (e == "linear") key.ease = Ease::Linear;
-            else if (e == "in") key.ease = Ease::In;
-            else if (e == "out") key.ease = Ease::Out;
-            else if (e == "in-out") key.ease = Ease::InOut;
-            else diag.error("ease is \"linear\", \"in\", \"out\" or \"in-out\"", ptr + "/ease");
-        }
-        for (const auto& [name, _] : k.items())
-            if (name != "time" && name != "position" && name != "target" && name != "up" && name != "orientation" &&
-                name != "world_scale" && name != "ease")
-                diag.error(fmt::format("unknown keyframe field \"{}\"", name), ptr + "/" + name);
+        r.optional(k, "world_scale", ptr, key.world_scale, NumberRange::positive());
+        std::string ease;
+        if (r.optional(k, "ease", ptr, ease, Choices{"linear", "in", "out", "in-out"}))
+            key.ease = ease == "in" ? Ease::In : ease == "out" ? Ease::Out : ease == "in-out" ? Ease::InOut : Ease::Linear;
         if (key.target) key.orientation = look_at(key.position, *key.target, key.up).orientation;
         path.keys_.push_back(key);
     }
-    if (diag.error_count() > errors) return std::nullopt;
+    if (r.errors() > 0) return std::nullopt;
     return path;
 }
 

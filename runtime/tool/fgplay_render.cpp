@@ -26,8 +26,7 @@ int render(const RenderOptions& o) {
         frame.knobs = o.knobs;
         frame.lens_mask = o.lens_mask;
         frame.foveation = o.foveation;
-        Diagnostics ignore;
-        SceneSettings scene = parse_scene_settings(&pack->manifest.scene, "/scene", ignore);
+        const SceneSettings& scene = pack->manifest.scene;
         StereoSettings stereo;
         stereo.ipd_m = o.ipd_m;
         stereo.world_scale = scene.world_scale;

@@ -4,7 +4,6 @@
 
 #include "command_outcome.h"
 #include "fgplay_render.h"
-#include "graph/scene_settings.h"
 #include "offline/frame_record.h"
 #include "offline/path_render.h"
 #include "pack/pack_reader.h"
@@ -26,8 +25,7 @@ int render_path(const RenderOptions& o) {
     auto pack = read_pack_or_report(o.pack);
     if (!pack) return 1;
     Diagnostics diag;
-    SceneSettings scene = parse_scene_settings(&pack->manifest.scene, "/scene", diag);
-    auto path = CameraPath::load(o.path, scene.world_scale, diag);
+    auto path = CameraPath::load(o.path, pack->manifest.scene.world_scale, diag);
     if (!path) {
         fmt::print(stderr, "{}", diag.format(o.path));
         return 1;

@@ -1,7 +1,8 @@
 #include "xr/xr_command.h"
 
-#include <cstdio>
 #include <fmt/format.h>
+
+#include "frame/frame_arguments.h"
 
 namespace fg::xr {
 
@@ -34,28 +35,11 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
 }
 
 int XrCommand::run() {
-    if (!size.empty()) {
-        unsigned w = 0, h = 0;
-        if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384) {
-            fmt::print(stderr, "fgplay xr: --size must look like 512x512\n");
-            return 2;
-        }
-        options.width = w;
-        options.height = h;
-    }
-    if (!parse_stereo_mode(stereo, options.stereo)) {
-        fmt::print(stderr, "fgplay xr: --stereo is reproject, per-eye or naive, not '{}'\n", stereo);
+    std::string error;
+    if ((!size.empty() && !parse_size(size, 16384, options.width, options.height, error)) ||
+        !parse_stereo(stereo, options.stereo, error) || !parse_knobs(knobs, options.knobs, error)) {
+        fmt::print(stderr, "fgplay xr: {}\n", error);
         return 2;
-    }
-    for (const auto& k : knobs) {
-        auto eq = k.find('=');
-        try {
-            if (eq == std::string::npos) throw std::invalid_argument(k);
-            options.knobs[k.substr(0, eq)] = std::stod(k.substr(eq + 1));
-        } catch (const std::exception&) {
-            fmt::print(stderr, "fgplay xr: --knob takes name=value, not '{}'\n", k);
-            return 2;
-        }
     }
     return play_xr(options);
 }

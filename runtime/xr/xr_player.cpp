@@ -54,10 +54,9 @@ class XrPlayer {
 public:
     XrPlayer(const OpenXrInstance& instance, const vk::Context& ctx, const Pack& pack, const XrPlayOptions& o)
         : instance_(instance), ctx_(ctx), pack_(pack), options_(o) {
-        Diagnostics ignore;
-        scene_ = parse_scene_settings(&pack.manifest.scene, "/scene", ignore);
+        scene_ = pack.manifest.scene;
         origin_ = look_at(scene_.camera.position, scene_.camera.target, scene_.camera.up);
-        scene_gpu_ = make_gpu_scene(pack.manifest.scene);
+        scene_gpu_ = make_gpu_scene(scene_);
         play_ = PlaySpace(origin_, scene_.world_scale);
         scale_ = WorldScale(scene_.world_scale);
         if (pack.manifest.period) period_ = glm::dvec3((*pack.manifest.period)[0], (*pack.manifest.period)[1], (*pack.manifest.period)[2]);
@@ -107,7 +106,7 @@ public:
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         stereo_.world_scale = scene_.world_scale;
-        flight_ = std::make_unique<ProbedFlight>(ctx, pack, locomotion_settings(scene_.locomotion), scene_.world_scale);
+        flight_ = std::make_unique<ProbedFlight>(ctx, pack, scene_.locomotion, scene_.world_scale);
         if (o.check_collisions) witness_ = std::make_unique<CollisionWitness>(pack);
     }
 
@@ -337,18 +336,19 @@ private:
         // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
         // pixels outside it are never marched.
         for (int eye = 0; eye < 2; ++eye)
-            if (lenses_[eye].radius_u > 0.0)
-                gpu.views[eye].lens = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v),
-                                       static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
+            if (lenses_[eye].radius_u > 0.0) {
+                gpu.views[eye].lens_centre = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v)};
+                gpu.views[eye].lens_radii = {static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
+            }
         executor_->set_frame(gpu);
         // Flight (not the tracked head) drives the comfort vignette, where the scene has one; a snap
-        // turn fades the image (misc2.y) on its way to and from black.
-        if (scene_gpu_.misc[2] > 0.0f || brightness < 1.0 || faded_) {
+        // turn fades the image on its way to and from black.
+        if (scene_gpu_.vignette > 0.0f || brightness < 1.0 || faded_) {
             GpuScene sc = scene_gpu_;
-            if (scene_gpu_.misc[2] > 0.0f)
-                sc.misc[2] = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / play_.world_scale(),
-                                                                 0.0, scene_gpu_.misc[2]));
-            sc.misc2[1] = static_cast<float>(1.0 - brightness);
+            if (scene_gpu_.vignette > 0.0f)
+                sc.vignette = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / play_.world_scale(),
+                                                                  0.0, scene_gpu_.vignette));
+            sc.fade = static_cast<float>(1.0 - brightness);
             faded_ = brightness < 1.0;
             executor_->set_scene(sc);
         }

@@ -46,8 +46,8 @@ Flown fly(const std::string& gallery_name) {
     if (!f.twin) throw std::runtime_error(diag.format());
     for (const auto& v : make_bench_views(*f.twin, f.ir->scene))
         if (v.name == "filled") f.start = v.head;
-    f.locomotion = locomotion_settings(f.ir->scene.locomotion);
-    f.traces = make_head_traces(*f.twin, f.ir->scene, f.locomotion, f.start, kFrames);
+    f.locomotion = f.ir->scene.locomotion;
+    f.traces = make_head_traces(*f.twin, f.ir->scene, f.start, kFrames);
     return f;
 }
 

@@ -13,13 +13,7 @@ using nlohmann::json;
 
 namespace {
 
-std::vector<std::string> gallery() {
-    std::vector<std::string> out;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/graphs/gallery"))
-        if (e.path().extension() == ".json") out.push_back(e.path().string());
-    std::sort(out.begin(), out.end());
-    return out;
-}
+std::vector<std::string> gallery() { return fg::test::graph_files("graphs/gallery"); }
 
 const fg::CompiledPass* find_pass(const fg::CompileResult& r, const std::string& name) {
     for (const auto& p : r.passes)

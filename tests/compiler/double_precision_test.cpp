@@ -67,7 +67,7 @@ TEST(DoublePrecision, the_graph_chooses_it_and_the_compile_option_overrides_it) 
     auto dbl = fg::compile_graph(g.dump(), fg::NodeLibrary::builtin(), {}, diag);
     ASSERT_TRUE(dbl) << diag.format();
     EXPECT_EQ(dbl->manifest.precision, "double");
-    EXPECT_EQ(dbl->manifest.scene.value("precision", ""), "double");
+    EXPECT_TRUE(dbl->manifest.scene.double_precision);
     fg::CompileOptions as_float;
     as_float.double_precision = false;
     auto flt = fg::compile_graph(g.dump(), fg::NodeLibrary::builtin(), as_float, diag);

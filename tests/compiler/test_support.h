@@ -2,9 +2,12 @@
 // Helpers for compiler tests: a small valid graph to start from, and matchers for diagnostics.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +29,15 @@ inline nlohmann::json minimal_graph() {
       ],
       "outputs": {"distance": "ball.distance", "albedo": "tone.color"}
     })");
+}
+
+// The graphs (.json) in a folder of the source tree, sorted.
+inline std::vector<std::string> graph_files(const std::string& folder) {
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/" + folder))
+        if (e.path().extension() == ".json") out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 inline std::string read_source_file(const std::string& relative) {

@@ -58,9 +58,7 @@ TEST(Locomotion, AStepNeverLeavesTheEmptyBallOfAnOldProbeLessTheHeadRadius) {
 }
 
 TEST(Locomotion, ProbesLookAheadAlongTheVelocity) {
-    LocomotionSettings s;
-    s.latency_s = 0.1;
-    Locomotion l(s, 1.0);
+    Locomotion l({}, 1.0, 0.1);
     auto pts = l.probe_points({1.0, 2.0, 3.0}, {0.0, 0.0, -10.0});
     ASSERT_EQ(pts.size(), 2u);
     EXPECT_EQ(pts[0], glm::dvec3(1.0, 2.0, 3.0));

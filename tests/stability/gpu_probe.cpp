@@ -68,10 +68,7 @@ std::vector<glm::vec4> gpu_probe(const vk::Context& ctx, const Pack& pack, const
         else if (b.name == "FgProbeResults") vk::write_storage_buffer(ctx, set, b.binding, *out);
         else throw std::runtime_error("probe pass binds unknown " + b.name);
     }
-    struct {
-        std::int32_t count;
-        float normal_step;
-    } push{static_cast<std::int32_t>(n), normal_step};
+    const ProbePush push{static_cast<std::int32_t>(n), normal_step};
     vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
         pipeline.dispatch(cmd, set, {static_cast<std::uint32_t>((n + 63) / 64), 1, 1},
                           std::span<const std::byte>(reinterpret_cast<const std::byte*>(&push), sizeof push));

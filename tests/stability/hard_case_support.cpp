@@ -75,7 +75,7 @@ HardRender render_hard_case(const Pack& pack, StereoMode mode, std::map<std::str
     fs.count_evaluations = count_evaluations;
     StereoSettings ss;
     ss.width = ss.height = kHardCaseSize;
-    ss.world_scale = pack.manifest.scene.value("scale", 1.0);
+    ss.world_scale = pack.manifest.scene.world_scale;
     HeadlessRenderer r(shared_context(), pack, fs, ss);
     HardRender out;
     out.frame = r.render(r.scene_camera(), 0.0);

@@ -1,45 +1,9 @@
 // Shared by every pass: the frame and scene uniforms, ray generation and the march helpers.
 // The compiler pastes this after the knob constants and before the scene's code.
 
-// One view: an eye (left, right) or the centre eye used by stereo reprojection.
-struct FgView {
-    vec4 origin;    // xyz eye position in scene units
-    vec4 right;     // xyz unit right axis
-    vec4 up;        // xyz unit up axis
-    vec4 forward;   // xyz unit forward axis
-    vec4 tan_fov;   // tangents of the frustum edges: x left (<0), y right, z down (<0), w up
-    vec4 lens;      // the lens mask: an ellipse in uv, xy centre, zw radii; zw = 0 when off
-};
-
-layout(set = 0, binding = 0, std140) uniform FgFrame {
-    FgView views[3];     // 0 left, 1 right, 2 centre
-    uvec4 size;          // xy eye image size, zw centre-eye image size (wider: it covers both eyes)
-    uvec4 info;          // x frame index, y cone levels, z projection (FG_PROJECTION_*), w unused
-    vec4 time;           // x seconds, y world scale, z interpupillary distance (scene units), w unused
-    vec4 pixel;          // x tangent of the half-diagonal of one full-resolution pixel; y tangent per pixel
-    vec4 foveation;      // x fovea radius in half image heights (0: off), y blend band width
-    // The camera (centre eye) in double, as hi + lo floats. Packs of precision "double" evaluate
-    // the scene at fg_anchor() + p, and every origin above is then relative to it.
-    vec4 anchor_hi;
-    vec4 anchor_lo;
-} fg_frame;
-
-layout(set = 0, binding = 1, std140) uniform FgScene {
-    vec4 light_dir;      // xyz unit direction towards the light
-    vec4 light_color;
-    vec4 ambient;
-    vec4 sss_color;
-    vec4 rim_color;
-    vec4 albedo;         // used when the graph binds no albedo
-    vec4 bg_top;
-    vec4 bg_bottom;
-    vec4 fog;            // rgb colour, a density per scene unit
-    vec4 glow;           // rgb colour * intensity, a falloff distance
-    vec4 bounds;         // xyz centre, w radius: rays outside this sphere miss
-    vec4 misc;           // x exposure, y far limit, z vignette strength, w foveation inner radius
-    vec4 misc2;          // x foveation blend, y fade to black (0 none, 1 black), zw unused
-    vec4 bounds_lo;      // xyz: the bounds' centre less its float value (precision "double" adds it)
-} fg_scene;
+// The frame and scene blocks: their structs are in gpu_interface.h, pasted before this file.
+layout(set = 0, binding = 0, std140) uniform FgFrame { GpuFrame fg_frame; };
+layout(set = 0, binding = 1, std140) uniform FgScene { GpuScene fg_scene; };
 
 #ifdef FG_DOUBLE_SCENE
 dvec3 fg_anchor()
@@ -52,19 +16,16 @@ dvec3 fg_anchor()
 vec3 fg_bounds_centre()
 {
 #ifdef FG_DOUBLE_SCENE
-    return vec3((dvec3(fg_scene.bounds.xyz) + dvec3(fg_scene.bounds_lo.xyz)) - fg_anchor());
+    return vec3((dvec3(fg_scene.bounds_centre) + dvec3(fg_scene.bounds_centre_lo)) - fg_anchor());
 #else
-    return fg_scene.bounds.xyz;
+    return fg_scene.bounds_centre;
 #endif
 }
 
-// How a pixel becomes a ray (fg_frame.info.z, the same for every pass of a frame): the view's
+// How a pixel becomes a ray (fg_frame.projection, the same for every pass of a frame): the view's
 // perspective frustum (the headset), or offline panoramas: equirectangular around the view's
 // origin, and omni-directional stereo (ODS), where each column's eye sits on the circle of the
 // interpupillary distance, looking along the tangent, as 360-degree stereo video players expect.
-#define FG_PROJECTION_PERSPECTIVE 0u
-#define FG_PROJECTION_EQUIRECT 1u
-#define FG_PROJECTION_ODS 2u
 
 // Longitude (0 straight ahead, positive to the right) and latitude (positive up) of a panorama's
 // uv in [0, 1]^2, y down.
@@ -76,8 +37,8 @@ vec2 fg_panorama_angles(vec2 uv)
 // Ray direction through a point of a view's image, uv in [0, 1]^2 with y down.
 vec3 fg_ray_dir(int view, vec2 uv)
 {
-    FgView v = fg_frame.views[view];
-    if (fg_frame.info.z != FG_PROJECTION_PERSPECTIVE) {
+    GpuView v = fg_frame.views[view];
+    if (fg_frame.projection != FG_PROJECTION_PERSPECTIVE) {
         vec2 a = fg_panorama_angles(uv);
         return cos(a.y) * (sin(a.x) * v.right.xyz + cos(a.x) * v.forward.xyz) + sin(a.y) * v.up.xyz;
     }
@@ -91,11 +52,11 @@ vec3 fg_ray_dir(int view, vec2 uv)
 // direction (the views' origins are the head's centre then).
 vec3 fg_ray_origin(int view, vec2 uv)
 {
-    FgView v = fg_frame.views[view];
-    if (fg_frame.info.z == FG_PROJECTION_ODS && view != 2) {
+    GpuView v = fg_frame.views[view];
+    if (fg_frame.projection == FG_PROJECTION_ODS && view != FG_VIEW_CENTRE) {
         float lon = fg_panorama_angles(uv).x;
-        float side = view == 0 ? -0.5 : 0.5;
-        return v.origin.xyz + side * fg_frame.time.z * (cos(lon) * v.right.xyz - sin(lon) * v.forward.xyz);
+        float side = view == FG_VIEW_LEFT ? -0.5 : 0.5;
+        return v.origin.xyz + side * fg_frame.ipd * (cos(lon) * v.right.xyz - sin(lon) * v.forward.xyz);
     }
     return v.origin.xyz;
 }
@@ -108,8 +69,8 @@ vec3 fg_ray_origin(int view, vec2 uv)
 vec2 fg_bounds_interval_spread(vec3 ro, vec3 rd, float cone_tan, float spread)
 {
     vec3 oc = fg_bounds_centre() - ro;
-    float radius = fg_scene.bounds.w + spread;
-    float far = fg_scene.misc.y;
+    float radius = fg_scene.bounds_radius + spread;
+    float far = fg_scene.far_limit;
     if (cone_tan > 0.0) {
         float dist = length(oc);
         if (dist > radius) {
@@ -134,12 +95,12 @@ vec2 fg_bounds_interval(vec3 ro, vec3 rd, float cone_tan)
 // half-diagonal in the tangent plane bounds the angle from above, so the cone covers the pixel.
 float fg_cone_tan(int level)
 {
-    return tan(min(fg_frame.pixel.x * float(1 << level), 1.5));
+    return tan(min(fg_frame.pixel_cone_tan * float(1 << level), 1.5));
 }
 
 ivec2 fg_view_size(int view)
 {
-    return ivec2(view == 2 ? fg_frame.size.zw : fg_frame.size.xy);
+    return ivec2(view == FG_VIEW_CENTRE ? fg_frame.centre_size : fg_frame.eye_size);
 }
 
 // How far the eyes of a conemarch block 2^level columns wide sit from the eye of its centre
@@ -147,8 +108,8 @@ ivec2 fg_view_size(int view)
 // block's longitude. A cone whose radius grows by this much covers the rays of every eye.
 float fg_origin_spread(int view, int level)
 {
-    if (fg_frame.info.z != FG_PROJECTION_ODS || view == 2) return 0.0;
-    return 0.5 * fg_frame.time.z * 3.14159265 * float(1 << level) / float(fg_view_size(view).x);
+    if (fg_frame.projection != FG_PROJECTION_ODS || view == FG_VIEW_CENTRE) return 0.0;
+    return 0.5 * fg_frame.ipd * 3.14159265 * float(1 << level) / float(fg_view_size(view).x);
 }
 
 // Conemarch levels live in one atlas image per view: level 0 at the origin, level k >= 1 stacked in
@@ -170,9 +131,9 @@ ivec4 fg_level_rect(int level, ivec2 full)
 // footprint, so a coarse level skips a block only if every child pixel skips too.
 bool fg_outside_lens(int view, vec2 uv, vec2 margin)
 {
-    vec4 lens = fg_frame.views[view].lens;
-    if (lens.z <= 0.0) return false;
-    vec2 q = (uv - lens.xy) / (lens.zw + margin);
+    GpuView v = fg_frame.views[view];
+    if (v.lens_radii.x <= 0.0) return false;
+    vec2 q = (uv - v.lens_centre) / (v.lens_radii + margin);
     return dot(q, q) > 1.0;
 }
 
@@ -185,12 +146,12 @@ bool fg_outside_lens(int view, ivec2 pixel)
 // 1 in the periphery. The centre eye of stereo reprojection is never foveated.
 float fg_periphery(int view, ivec2 pixel)
 {
-    if (fg_frame.foveation.x <= 0.0 || view == 2) return 0.0;
+    if (fg_frame.fovea_radius <= 0.0 || view == FG_VIEW_CENTRE) return 0.0;
     vec2 size = vec2(fg_view_size(view));
-    vec4 lens = fg_frame.views[view].lens;
-    vec2 centre = (lens.z > 0.0 ? lens.xy : vec2(0.5)) * size;
+    GpuView v = fg_frame.views[view];
+    vec2 centre = (v.lens_radii.x > 0.0 ? v.lens_centre : vec2(0.5)) * size;
     float r = length(vec2(pixel) + 0.5 - centre) / (0.5 * size.y);
-    return clamp((r - fg_frame.foveation.x) / max(fg_frame.foveation.y, 1e-6), 0.0, 1.0);
+    return clamp((r - fg_frame.fovea_radius) / max(fg_frame.fovea_blend, 1e-6), 0.0, 1.0);
 }
 
 // Foveation splits each per-eye pass into two dispatches, so that no SIMD lane idles on a skipped

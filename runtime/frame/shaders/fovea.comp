@@ -11,12 +11,12 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform image2D fg_depth;
 layout(set = 0, binding = 4, rgba8) uniform image2D fg_final;
-layout(push_constant) uniform FgFoveaPush { int view; } pc;
+layout(push_constant) uniform FgFoveaPush { FoveaPush pc; };
 
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = ivec2(fg_frame.size.xy);
+    ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
     if (((pixel.x | pixel.y) & 1) == 0 || fg_outside_lens(pc.view, pixel)) return;
     float s = fg_periphery(pc.view, pixel);

@@ -1,57 +1,139 @@
 //! pass: naive
 //! needs: distance
 //! when: always
+//! include: march_counters.glsl
+//! include: lane_queue.glsl
 // The baseline: plain sphere tracing of one eye at full resolution, every pixel on its own. Every
-// speed figure is a ratio against this pass, and tests use it as a reference.
+// speed figure is a ratio against this pass, and tests use it as a reference. With
+// FG_PERSISTENT_LANES its lanes take pixels from a queue (lane_queue.glsl): the stronger baseline,
+// bit-identical frames.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform writeonly image2D fg_depth;   // t at the hit, FG_MISS on a miss
 #ifdef FG_HAS_GLOW
 layout(set = 0, binding = 4, r32f) uniform writeonly image2D fg_glow;    // closest approach of the ray
 #endif
-layout(set = 0, binding = 5, std430) buffer FgCounters { uint evaluations[]; } fg_counters;
-layout(push_constant) uniform FgNaivePush { int view; int counter_slot; int stride; } pc;
+layout(push_constant) uniform FgNaivePush { NaivePush pc; };
+
+uint fg_evaluations = 0u;
+
+// One pixel's ray, one step at a time.
+struct FgNaiveRay {
+    ivec2 pixel;
+    vec3 ro;
+    vec3 rd;
+    vec2 range;
+    float pixel_tan;
+    float t;
+    float closest;
+    int i;
+    bool marching;
+    bool hit;
+    bool escaped;
+};
+
+FgNaiveRay fg_naive_begin(ivec2 pixel, ivec2 size)
+{
+    FgNaiveRay r;
+    r.pixel = pixel;
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+    r.ro = fg_ray_origin(pc.view, uv);
+    r.rd = fg_ray_dir(pc.view, uv);
+    r.range = fg_bounds_interval(r.ro, r.rd, 0.0);
+    r.pixel_tan = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
+    r.t = r.range.x;
+    r.closest = 1e30;
+    r.i = 0;
+    r.hit = false;
+    r.escaped = false;
+    r.marching = r.range.x <= r.range.y && FG_MAX_STEPS > 0;
+    return r;
+}
+
+void fg_naive_step(inout FgNaiveRay r)
+{
+    float d = fg_scene_distance(r.ro + r.rd * r.t) * FG_STEP_SCALE;
+    fg_evaluations++;
+    r.closest = min(r.closest, d);
+    if (d < FG_EPSILON * r.pixel_tan * r.t) {
+        r.hit = true;
+        r.marching = false;
+        return;
+    }
+    r.t += d;
+    r.escaped = r.t > r.range.y;
+    r.marching = !r.escaped && ++r.i < FG_MAX_STEPS;
+}
+
+void fg_naive_finish(FgNaiveRay r)
+{
+    bool in_bounds = r.range.x <= r.range.y;
+    bool capped = in_bounds && !r.hit && !r.escaped && r.i == FG_MAX_STEPS;
+    float result = r.hit || (capped && !FG_MISS_ON_STEP_CAP) ? r.t : FG_MISS;
+    imageStore(fg_depth, r.pixel, vec4(result));
+#ifdef FG_HAS_GLOW
+    imageStore(fg_glow, r.pixel, vec4(r.closest));
+#endif
+}
+
+// A pixel outside the lens is never marched: it misses.
+bool fg_skip_outside_lens(ivec2 pixel)
+{
+    if (!fg_outside_lens(pc.view, pixel)) return false;
+    imageStore(fg_depth, pixel, vec4(FG_MISS));
+#ifdef FG_HAS_GLOW
+    imageStore(fg_glow, pixel, vec4(1e30));
+#endif
+    return true;
+}
+
+void fg_naive_persistent(ivec2 size)
+{
+    ivec2 grid = (size + ivec2(pc.stride - 1)) / pc.stride;
+    FgNaiveRay r;
+    r.marching = false;
+    bool working = false;
+    while (true) {
+        uint index = fg_take_work(!working, uint(pc.stride - 1));
+        if (!working) {
+            ivec2 cell = fg_work_cell(index, grid);
+            if (cell.x < 0) break;
+            ivec2 pixel = cell * pc.stride;
+            if (cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(pc.view, pixel, pc.stride) &&
+                !fg_skip_outside_lens(pixel)) {
+                r = fg_naive_begin(pixel, size);
+                working = true;
+                if (!r.marching) {
+                    fg_naive_finish(r);
+                    working = false;
+                }
+            }
+        }
+        fg_count_iteration(working);
+        if (!working) continue;
+        fg_naive_step(r);
+        if (!r.marching) {
+            fg_naive_finish(r);
+            working = false;
+        }
+    }
+}
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
-    ivec2 size = ivec2(fg_frame.size.xy);
-    if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
-    if (fg_outside_lens(pc.view, pixel)) {
-        imageStore(fg_depth, pixel, vec4(FG_MISS));
-#ifdef FG_HAS_GLOW
-        imageStore(fg_glow, pixel, vec4(1e30));
-#endif
-        return;
-    }
-    vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
-    vec3 ro = fg_ray_origin(pc.view, uv);
-    vec3 rd = fg_ray_dir(pc.view, uv);
-    vec2 range = fg_bounds_interval(ro, rd, 0.0);
-    float pixel_tan = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
-    float result = FG_MISS;
-    float closest = 1e30;
-    uint evaluations = 0u;
-    if (range.x <= range.y) {
-        float t = range.x;
-        bool hit = false;
-        int i = 0;
-        for (; i < FG_MAX_STEPS; ++i) {
-            float d = fg_scene_distance(ro + rd * t) * FG_STEP_SCALE;
-            evaluations++;
-            closest = min(closest, d);
-            if (d < FG_EPSILON * pixel_tan * t) {
-                hit = true;
-                break;
-            }
-            t += d;
-            if (t > range.y) break;
+    ivec2 size = ivec2(fg_frame.eye_size);
+    if (FG_PERSISTENT_LANES) {
+        fg_naive_persistent(size);
+    } else {
+        ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
+        if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+        if (fg_skip_outside_lens(pixel)) return;
+        FgNaiveRay r = fg_naive_begin(pixel, size);
+        while (r.marching) {
+            fg_count_iteration(true);
+            fg_naive_step(r);
         }
-        if (hit || (i == FG_MAX_STEPS && !FG_MISS_ON_STEP_CAP)) result = t;
+        fg_naive_finish(r);
     }
-    imageStore(fg_depth, pixel, vec4(result));
-#ifdef FG_HAS_GLOW
-    imageStore(fg_glow, pixel, vec4(closest));
-#endif
-    if (FG_COUNT_EVALUATIONS) atomicAdd(fg_counters.evaluations[pc.counter_slot], evaluations);
+    fg_count_flush(pc.counter_slot, fg_evaluations);
 }

@@ -7,7 +7,7 @@
 layout(local_size_x = 64) in;
 layout(set = 0, binding = 3, std430) readonly buffer FgProbePoints { vec4 points[]; } fg_points;
 layout(set = 0, binding = 4, std430) writeonly buffer FgProbeResults { vec4 results[]; } fg_results;
-layout(push_constant) uniform FgProbePush { int count; float normal_step; } pc;
+layout(push_constant) uniform FgProbePush { ProbePush pc; };
 
 void main()
 {

@@ -1,6 +1,7 @@
 //! pass: reproject
 //! needs: distance
 //! when: always
+//! include: march_counters.glsl
 // Stereo reprojection (after van de Hoef and Zalmstra's gather, as Framestore used it): each eye's
 // ray walks the centre eye's conemarch levels instead of the scene. A point of the eye ray is
 // empty space if it is closer to the centre eye than the centre's lower bound for the pixel it
@@ -11,24 +12,18 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, rg32f) uniform readonly image2D fg_centre_levels;
-layout(set = 0, binding = 4, std430) buffer FgCounters { uint evaluations[]; } fg_counters;
 layout(set = 0, binding = 5, r32f) uniform writeonly image2D fg_depth;
 #ifdef FG_HAS_GLOW
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_centre_glow;
 layout(set = 0, binding = 7, r32f) uniform writeonly image2D fg_glow;
 #endif
-layout(push_constant) uniform FgReprojectPush {
-    int view;            // 0 left, 1 right
-    int counter_slot;
-    int levels;          // levels of the centre atlas, 0 .. levels - 1
-    int stride;          // 1, or 2 for the foveated periphery's dispatch
-} pc;
+layout(push_constant) uniform FgReprojectPush { ReprojectPush pc; };
 
 const float FG_HUGE = 1e30;
 
 // The centre eye's camera, and the eye ray relative to it: a point of the eye ray is
 // o_c + b + r t, with b = o_e - o_c.
-FgView C;
+GpuView C;
 vec3 b;
 vec3 r;
 ivec2 centre_size;
@@ -108,8 +103,8 @@ void main()
 #endif
         return;
     }
-    C = fg_frame.views[2];
-    centre_size = fg_view_size(2);
+    C = fg_frame.views[FG_VIEW_CENTRE];
+    centre_size = fg_view_size(FG_VIEW_CENTRE);
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
     vec3 ro = fg_ray_origin(pc.view, uv);
     r = fg_ray_dir(pc.view, uv);
@@ -133,6 +128,7 @@ void main()
             // beside or level with it) take one step and look again; else march on for a while.
             int steps = t > before ? FG_FIXUP_STEPS : 1;
             for (int i = 0; i < steps && budget > 0; ++i, --budget) {
+                fg_count_iteration(true);
                 float d = fg_scene_distance(ro + r * t) * FG_STEP_SCALE;
                 evaluations++;
                 closest = min(closest, d);
@@ -162,5 +158,5 @@ void main()
     closest = min(closest, imageLoad(fg_centre_glow, ivec2(px)).x);
     imageStore(fg_glow, pixel, vec4(closest));
 #endif
-    if (FG_COUNT_EVALUATIONS) atomicAdd(fg_counters.evaluations[pc.counter_slot], evaluations);
+    fg_count_flush(pc.counter_slot, evaluations);
 }

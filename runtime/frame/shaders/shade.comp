@@ -18,11 +18,7 @@ layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_other_color;
 layout(set = 0, binding = 5, rgba8) uniform readonly image2D fg_other_color;
 #endif
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_other_depth;
-layout(push_constant) uniform FgShadePush {
-    int view;
-    int reuse;           // 1: take the other eye's shading where it sees the same point
-    int stride;
-} pc;
+layout(push_constant) uniform FgShadePush { ShadePush pc; };
 
 vec3 fg_background(vec3 rd)
 {
@@ -61,16 +57,16 @@ vec3 fg_normal_at(vec3 p, float h)
 // other eye's direction: the benchmark measures what that costs.
 bool fg_reuse_other_eye(vec3 p, out vec4 color)
 {
-    if (fg_frame.info.z != FG_PROJECTION_PERSPECTIVE) return false;
+    if (fg_frame.projection != FG_PROJECTION_PERSPECTIVE) return false;
     int other = 1 - pc.view;
-    FgView o = fg_frame.views[other];
+    GpuView o = fg_frame.views[other];
     vec3 q = p - o.origin.xyz;
     float z = dot(q, o.forward.xyz);
     if (z <= 0.0) return false;
     vec2 tangent = vec2(dot(q, o.right.xyz), dot(q, o.up.xyz)) / z;
     vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
                    (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
-    ivec2 size = ivec2(fg_frame.size.xy);
+    ivec2 size = ivec2(fg_frame.eye_size);
     ivec2 at = ivec2(floor(uv * vec2(size)));
     if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
     // A foveated-away pixel of the other eye has no colour yet: the fovea pass fills it later.
@@ -86,14 +82,14 @@ bool fg_reuse_other_eye(vec3 p, out vec4 color)
 vec3 fg_tonemap(vec3 c)
 {
     // ACES fit (Narkowicz): keeps bright glow from clipping to white abruptly.
-    c *= fg_scene.misc.x;
+    c *= fg_scene.exposure;
     return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
 }
 
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
-    ivec2 size = ivec2(fg_frame.size.xy);
+    ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {
         imageStore(fg_color, pixel, vec4(0.0, 0.0, 0.0, 1.0));
@@ -117,8 +113,8 @@ void main()
 #ifdef FG_HAS_NORMALS
         // The tap distance follows the pixel's footprint, so normals are as sharp as the image. Its
         // floor (an eye inside the fractal has t = 0) scales with the viewer (world scale in
-        // time.y: a scene at 1e-6 is smaller than a fixed 1e-6) and stays above float's spacing at p.
-        float floor_h = max(1e-6 * fg_frame.time.y, 1e-6 * length(p));
+        // world_scale: a scene at 1e-6 is smaller than a fixed 1e-6) and stays above float's spacing at p.
+        float floor_h = max(1e-6 * fg_frame.world_scale, 1e-6 * length(p));
         n = fg_normal_at(p, max(fg_cone_tan(0) * t, floor_h));
 #endif
         FgSurface s = fg_scene_surface(p, -rd, n);
@@ -148,7 +144,7 @@ void main()
 #ifdef FG_HAS_POST
     imageStore(fg_color, pixel, vec4(color, 1.0));
 #else
-    // The snap-turn fade (misc2.y: 0 none, 1 black) scales the displayed image linearly.
-    imageStore(fg_color, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.misc2.y), 1.0));
+    // The fade (snap turns, the head in the surface) scales the displayed image linearly.
+    imageStore(fg_color, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
 #endif
 }

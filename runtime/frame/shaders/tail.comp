@@ -2,18 +2,18 @@
 //! needs: distance
 //! when: always
 //! include: tail_queue.glsl
+//! include: march_counters.glsl
 // Finishes the full-resolution march of the pixels the conemarch deferred (FG_TAIL_AFTER): one
 // invocation per queued pixel, so the slow tail near surfaces runs in full workgroups instead of
 // idling the lanes of pixels that finished early. Dispatched indirectly with the queue's size.
 
 layout(local_size_x = 64) in;
 layout(set = 0, binding = 3, rg32f) uniform image2D fg_levels;
-layout(set = 0, binding = 4, std430) buffer FgCounters { uint evaluations[]; } fg_counters;
 layout(set = 0, binding = 5, r32f) uniform writeonly image2D fg_depth;
 #ifdef FG_HAS_GLOW
 layout(set = 0, binding = 6, r32f) uniform writeonly image2D fg_glow;
 #endif
-layout(push_constant) uniform FgTailPush { int view; int counter_slot; } pc;
+layout(push_constant) uniform FgTailPush { TailPush pc; };
 
 void main()
 {
@@ -36,6 +36,7 @@ void main()
     float step = 0.0;
     float omega = FG_OVERRELAX;
     for (; i < FG_FINE_STEPS; ++i) {
+        fg_count_iteration(true);
         float d = fg_scene_distance(ro + rd * t) * FG_STEP_SCALE;
         evaluations++;
         if (omega > 1.0 && d + previous < step) {
@@ -62,5 +63,5 @@ void main()
 #ifdef FG_HAS_GLOW
     imageStore(fg_glow, pixel, vec4(closest));
 #endif
-    if (FG_COUNT_EVALUATIONS) atomicAdd(fg_counters.evaluations[pc.counter_slot], evaluations);
+    fg_count_flush(pc.counter_slot, evaluations);
 }

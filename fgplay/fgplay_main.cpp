@@ -1,0 +1,41 @@
+// fgplay: plays Fractograph shader packs. Headless to images (render), benchmarks (bench), a
+// desktop window (view) and OpenXR headsets (xr). Each command is registered by its own layer;
+// this executable sits above them all and only puts them together.
+#include <CLI/CLI.hpp>
+
+#include "bench_command.h"
+#include "tool/render_command.h"
+#ifdef FG_HAVE_XR
+#include "xr/xr_command.h"
+#endif
+#ifdef FG_HAVE_DESKTOP
+#include "desktop/view_command.h"
+#endif
+
+int main(int argc, char** argv) {
+    CLI::App app{"fgplay: plays Fractograph shader packs (.fgpack)"};
+    app.require_subcommand(1);
+    fg::fgplay::RenderCommand render;
+    fg::fgplay::add_render_command(app, render);
+    fg::bench::BenchCommand bench;
+    fg::bench::add_bench_command(app, bench);
+#ifdef FG_HAVE_XR
+    fg::xr::XrCommand xr;
+    fg::xr::add_xr_command(app, xr);
+#endif
+#ifdef FG_HAVE_DESKTOP
+    fg::desktop::ViewCommand view;
+    fg::desktop::add_view_command(app, view);
+#endif
+
+    CLI11_PARSE(app, argc, argv);
+    if (render.chosen()) return render.run();
+    if (bench.chosen()) return bench.run();
+#ifdef FG_HAVE_XR
+    if (xr.chosen()) return xr.run();
+#endif
+#ifdef FG_HAVE_DESKTOP
+    if (view.chosen()) return view.run();
+#endif
+    return 2;
+}

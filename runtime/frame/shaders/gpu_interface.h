@@ -1,0 +1,146 @@
+// The structs the GPU reads, declared once for C++ and GLSL (as zeux/niagara's shared headers): the
+// frame and scene uniform blocks and every pass's push constants. The compiler pastes this file
+// before common.glsl into every pass; the runtime includes it. Fields are grouped so that std140
+// (uniform blocks) and C++ lay them out alike: vec4s, or a vec3 followed by one float, or four
+// scalars; the static_asserts at the end check the offsets the shaders rely on.
+#ifdef __cplusplus
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace fg {
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uvec2 = glm::uvec2;
+using uint = std::uint32_t;
+#endif
+
+// Views as the shaders number them: the eyes, and the centre eye that stereo reprojection marches.
+const int FG_VIEW_LEFT = 0;
+const int FG_VIEW_RIGHT = 1;
+const int FG_VIEW_CENTRE = 2;
+
+// How a pixel becomes a ray (GpuFrame.projection).
+const uint FG_PROJECTION_PERSPECTIVE = 0u;
+const uint FG_PROJECTION_EQUIRECT = 1u;
+const uint FG_PROJECTION_ODS = 2u;
+
+// One view: an eye or the centre eye.
+struct GpuView {
+    vec4 origin;     // xyz eye position in scene units (relative to the anchor in double packs)
+    vec4 right;      // xyz unit right axis
+    vec4 up;         // xyz unit up axis
+    vec4 forward;    // xyz unit forward axis
+    vec4 tan_fov;    // tangents of the frustum edges: x left (< 0), y right, z down (< 0), w up
+    vec2 lens_centre;   // the lens mask: an ellipse in uv; radii 0 when off
+    vec2 lens_radii;
+};
+
+// Set every frame (set 0, binding 0).
+struct GpuFrame {
+    GpuView views[3];
+    uvec2 eye_size;          // every eye image, in pixels
+    uvec2 centre_size;       // the centre eye's image (wider: it covers both eyes)
+    uint frame_index;
+    uint cone_levels;
+    uint projection;         // FG_PROJECTION_*
+    uint unused_0;
+    float seconds;           // scene time
+    float world_scale;       // scene units per metre of the viewer
+    float ipd;               // interpupillary distance in scene units
+    float unused_1;
+    float pixel_cone_tan;    // tangent of the half-diagonal of one full-resolution pixel
+    float pixel_tan;         // tangent per pixel
+    float fovea_radius;      // in half image heights; 0: foveation off
+    float fovea_blend;       // width of the band where fovea and periphery blend
+    // The camera (centre eye) in double, as hi + lo floats. Packs of precision "double" evaluate
+    // the scene at the anchor + p, and every view origin is then relative to it.
+    vec4 anchor_hi;
+    vec4 anchor_lo;
+};
+
+// The scene's settings (set 0, binding 1): uniforms, so editing them never recompiles.
+struct GpuScene {
+    vec4 light_dir;          // xyz unit direction towards the light
+    vec4 light_color;
+    vec4 ambient;
+    vec4 sss_color;
+    vec4 rim_color;
+    vec4 albedo;             // used when the graph binds no albedo
+    vec4 bg_top;
+    vec4 bg_bottom;
+    vec3 fog_color;
+    float fog_density;       // extinction per scene unit
+    vec3 glow_color;         // colour times intensity
+    float glow_falloff;      // distance at which glow drops to 1/e
+    vec3 bounds_centre;      // rays outside this sphere miss
+    float bounds_radius;
+    vec3 bounds_centre_lo;   // what float loses of the centre (double packs add it)
+    float unused_0;
+    float exposure;
+    float far_limit;         // the march's far limit, in scene units
+    float vignette;          // the comfort vignette's strength (0: none)
+    float fade;              // 0 none, 1 black: snap turns, the head in the surface
+};
+
+// Push constants, one struct per pass. `stride` is 1 for a full-resolution dispatch, 2 for the
+// foveated periphery's (every other pixel).
+struct ConemarchPush {
+    int view;
+    int level;               // 0 = full resolution
+    int top;                 // 1 for the coarsest level: no parent
+    int counter_slot;
+    int stride;
+};
+
+struct NaivePush {
+    int view;
+    int counter_slot;
+    int stride;
+};
+
+struct TailPush {
+    int view;
+    int counter_slot;
+};
+
+struct ReprojectPush {
+    int view;                // left or right
+    int counter_slot;
+    int levels;              // levels of the centre atlas, 0 .. levels - 1
+    int stride;
+};
+
+struct ShadePush {
+    int view;
+    int reuse;               // 1: take the other eye's shading where it sees the same point
+    int stride;
+};
+
+struct PostPush {
+    int view;
+    int stride;
+};
+
+struct FoveaPush {
+    int view;
+};
+
+struct ProbePush {
+    int count;
+    float normal_step;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(GpuView) == 96);
+static_assert(offsetof(GpuFrame, eye_size) == 288 && offsetof(GpuFrame, frame_index) == 304);
+static_assert(offsetof(GpuFrame, seconds) == 320 && offsetof(GpuFrame, pixel_cone_tan) == 336);
+static_assert(offsetof(GpuFrame, anchor_hi) == 352 && sizeof(GpuFrame) == 384);
+static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
+static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
+static_assert(offsetof(GpuScene, exposure) == 192 && sizeof(GpuScene) == 208);
+}  // namespace fg
+#endif

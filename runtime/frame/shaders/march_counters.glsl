@@ -1,0 +1,34 @@
+// What a marching pass counts in the counting frame (FG_COUNT_EVALUATIONS, a specialization
+// constant, so the timed frames carry none of it): SDF evaluations, and how busy the SIMD lanes
+// were. Every iteration of a marching loop adds the subgroup's size to `total` and the lanes that
+// evaluated in it to `busy` (subgroup ballots), so busy / total is the lane efficiency: the share of
+// lane-iterations that did work rather than wait for the slowest ray of their group. The counts of
+// counter slot s are words 3s (evaluations), 3s + 1 (busy) and 3s + 2 (total).
+
+layout(set = 0, binding = 12, std430) buffer FgCounters { uint counts[]; } fg_counters;
+
+uint fg_lanes_busy = 0u;
+uint fg_lanes_total = 0u;
+
+// Once per loop iteration, by every lane still in the loop.
+void fg_count_iteration(bool busy)
+{
+    if (!FG_COUNT_EVALUATIONS) return;
+    uint busy_lanes = subgroupBallotBitCount(subgroupBallot(busy));
+    if (subgroupElect()) {
+        fg_lanes_busy += busy_lanes;
+        fg_lanes_total += gl_SubgroupSize;
+    }
+}
+
+// Once per invocation, at its end.
+void fg_count_flush(int slot, uint evaluations)
+{
+    if (!FG_COUNT_EVALUATIONS) return;
+    uint base = 3u * uint(slot);
+    if (evaluations > 0u) atomicAdd(fg_counters.counts[base], evaluations);
+    if (fg_lanes_total > 0u) {
+        atomicAdd(fg_counters.counts[base + 1u], fg_lanes_busy);
+        atomicAdd(fg_counters.counts[base + 2u], fg_lanes_total);
+    }
+}

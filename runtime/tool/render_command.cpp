@@ -1,0 +1,86 @@
+#include "render_command.h"
+
+#include <cstdio>
+#include <fmt/format.h>
+
+#include "frame/frame_arguments.h"
+
+namespace fg::fgplay {
+
+void add_render_command(CLI::App& app, RenderCommand& c) {
+    RenderOptions& r = c.options;
+    CLI::App* render = c.command =
+        app.add_subcommand("render", "render a stereo frame headless (Mesa lavapipe without a GPU)");
+    render->add_option("pack", r.pack, "shader pack")->required()->check(CLI::ExistingFile);
+    render->add_option("--out", r.out, "output folder")->capture_default_str();
+    render->add_option("--size", c.size, "per-eye size WxH")->capture_default_str();
+    render->add_option("--ipd", r.ipd_m, "interpupillary distance in metres")->capture_default_str();
+    render->add_option("--camera", c.camera, "camera position and target: px,py,pz,tx,ty,tz");
+    render->add_option("--stereo", c.stereo, "reproject | per-eye | naive")->capture_default_str();
+    render->add_flag("--naive", c.naive, "the baseline: naive per-eye sphere tracing (same as --stereo naive)");
+    render->add_option("--levels", r.cone_levels, "conemarch levels, full resolution included")->capture_default_str();
+    render->add_option("--frames", c.frames, "frames to render (numbered images when more than one); with --path a range A:B");
+    render->add_option("--path", r.path, "render a camera path (docs/camera-path.md) to DIR/frame_NNNNNN.png")->check(CLI::ExistingFile);
+    render->add_option("--projection", c.projection, "with --path: perspective | equirect | ods")->capture_default_str();
+    render->add_option("--supersample", r.supersample, "with --path: samples per pixel along each axis (1-8)")->capture_default_str();
+    render->add_option("--shard", r.shard, "with --path: I/N, render shard I of N of the frame range (a job array's index)");
+    render->add_flag("--resume", r.resume, "with --path: skip frames already on disk and verified");
+    render->add_flag("!--no-progress", r.progress, "with --path: no progress bar on stderr");
+    render->add_option("--time", r.time, "scene time in seconds of the first frame");
+    render->add_option("--knob", c.knobs, "override an accuracy knob: name=value (fgc info lists them)");
+    render->add_flag("--describe", r.describe, "print the frame graph: passes, images, sizes");
+    render->add_flag("--depth", r.depth, "also write 16-bit depth PNGs");
+    render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
+    render->add_option("--device", r.device, "Vulkan device: index or name substring");
+    render->add_flag("--lens-mask", r.lens_mask, "skip the pixels a headset's lens hides (an inscribed ellipse)");
+    render->add_option("--foveation", r.foveation,
+                       "fixed foveation: fovea radius in half image heights (0 off; default: the scene's)")
+        ->check(CLI::Range(0.0, 4.0));
+}
+
+int RenderCommand::run() {
+    RenderOptions& r = options;
+    std::string error;
+    if (!parse_size(size, 16384, r.width, r.height, error)) {
+        fmt::print(stderr, "fgplay: {}\n", error);
+        return 2;
+    }
+    if (!parse_projection(projection, r.projection)) {
+        fmt::print(stderr, "fgplay: --projection is perspective, equirect or ods, not '{}'\n", projection);
+        return 2;
+    }
+    if (r.path.empty()) {
+        if (r.projection != Projection::Perspective || r.resume || !r.shard.empty() || r.supersample != 1) {
+            fmt::print(stderr, "fgplay: --projection, --supersample, --shard and --resume go with --path\n");
+            return 2;
+        }
+        try {
+            std::size_t used = 0;
+            r.frames = std::stoi(frames, &used);
+            if (used != frames.size() || r.frames < 1) throw std::invalid_argument(frames);
+        } catch (const std::exception&) {
+            fmt::print(stderr, "fgplay: --frames without --path is a count, not '{}'\n", frames);
+            return 2;
+        }
+    } else {
+        r.frame_range = command->count("--frames") ? frames : ":";
+        // Panoramas are twice as wide as high unless --size says otherwise.
+        if (!command->count("--size") && r.projection != Projection::Perspective) r.height = r.width / 2;
+    }
+    if (naive) stereo = "naive";
+    if (!parse_stereo(stereo, r.stereo, error) || !parse_knobs(knobs, r.knobs, error)) {
+        fmt::print(stderr, "fgplay: {}\n", error);
+        return 2;
+    }
+    if (!camera.empty()) {
+        std::array<double, 6> c{};
+        if (std::sscanf(camera.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &c[0], &c[1], &c[2], &c[3], &c[4], &c[5]) != 6) {
+            fmt::print(stderr, "fgplay: --camera takes px,py,pz,tx,ty,tz\n");
+            return 2;
+        }
+        r.camera = c;
+    }
+    return render(r);
+}
+
+}  // namespace fg::fgplay

@@ -1,0 +1,108 @@
+// The scene settings are decoded once, typed: the locomotion block is checked like every other
+// block (a typo is an error naming its pointer, not a setting silently ignored), and a pack's
+// manifest carries the settings the compiler decoded, readable in packs written before.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "graph/scene_settings.h"
+#include "pack/manifest.h"
+#include "test_support.h"
+
+namespace {
+
+using fg::test::check_front;
+using fg::test::has_error;
+using fg::test::minimal_graph;
+using nlohmann::json;
+
+TEST(SceneSettings, a_misspelled_locomotion_field_is_refused_with_its_pointer) {
+    auto g = minimal_graph();
+    g["scene"]["locomotion"] = {{"max_sped", 3.0}};
+    EXPECT_TRUE(has_error(check_front(g), "/scene/locomotion/max_sped", "",
+                          "unknown scene setting \"max_sped\"; did you mean \"max_speed\"?"));
+}
+
+TEST(SceneSettings, a_locomotion_limit_must_be_a_positive_number) {
+    auto g = minimal_graph();
+    g["scene"]["locomotion"] = {{"max_speed", "fast"}, {"head_radius", 0.0}, {"speed_per_distance", -1.0}};
+    auto diag = check_front(g);
+    EXPECT_TRUE(has_error(diag, "/scene/locomotion/max_speed", "", "expected a number, got a string"));
+    EXPECT_TRUE(has_error(diag, "/scene/locomotion/head_radius", "", "0 is out of range (0, inf]"));
+    EXPECT_TRUE(has_error(diag, "/scene/locomotion/speed_per_distance", "", "-1 is out of range (0, inf]"));
+    g["scene"]["locomotion"] = 2.0;
+    EXPECT_TRUE(has_error(check_front(g), "/scene/locomotion", "", "expected an object, got a number"));
+}
+
+TEST(SceneSettings, locomotion_limits_reach_the_manifest_typed) {
+    auto g = minimal_graph();
+    g["scene"]["locomotion"] = {{"max_speed", 3.5}, {"head_radius", 0.02}};
+    fg::Diagnostics diag;
+    auto r = fg::test::compile_text(g.dump(), diag);
+    ASSERT_TRUE(r) << diag.format();
+    const fg::LocomotionSettings& loco = r->manifest.scene.locomotion;
+    EXPECT_EQ(loco.max_speed, 3.5);
+    EXPECT_EQ(loco.head_radius, 0.02);
+    EXPECT_EQ(loco.speed_per_distance, fg::LocomotionSettings{}.speed_per_distance);
+}
+
+// What the compiler encodes, the pack reader decodes to the very same settings (the light direction
+// is not normalised a second time), so the runtime sees what the compiler saw.
+TEST(SceneSettings, what_the_compiler_encodes_decodes_to_the_same_settings) {
+    auto graphs = fg::test::graph_files("graphs/gallery");
+    for (const auto& hard : fg::test::graph_files("graphs/hard")) graphs.push_back(hard);
+    ASSERT_GT(graphs.size(), 10u);
+    for (const auto& graph : graphs) {
+        fg::Diagnostics diag;
+        std::ifstream in(graph);
+        std::stringstream text;
+        text << in.rdbuf();
+        auto ir = fg::load_and_lower(text.str(), fg::NodeLibrary::builtin(), diag);
+        ASSERT_TRUE(ir) << graph << ": " << diag.format();
+        // As a pack holds it: JSON text.
+        const json encoded = json::parse(fg::scene_settings_to_json(ir->scene).dump());
+        EXPECT_TRUE(fg::parse_scene_settings(&encoded, "/scene", diag) == ir->scene) << graph;
+        EXPECT_FALSE(diag.has_errors()) << diag.format();
+    }
+}
+
+TEST(SceneSettings, a_compiled_manifest_reads_back_with_the_same_settings) {
+    fg::Diagnostics diag;
+    auto r = fg::test::compile_text(fg::test::read_source_file("graphs/gallery/mandelbulb.json"), diag);
+    ASSERT_TRUE(r) << diag.format();
+    auto read = fg::manifest_from_json(json::parse(fg::manifest_to_json(r->manifest).dump()), diag);
+    ASSERT_TRUE(read) << diag.format();
+    EXPECT_TRUE(read->scene == r->manifest.scene);
+}
+
+// Packs written before the block was typed hold "locomotion": {} (or some of its fields), and no
+// precision unless it was double.
+TEST(SceneSettings, packs_written_before_still_read) {
+    fg::Diagnostics diag;
+    auto r = fg::test::compile_text(minimal_graph().dump(), diag);
+    ASSERT_TRUE(r) << diag.format();
+    json m = fg::manifest_to_json(r->manifest);
+    m["scene"]["locomotion"] = json::object();
+    auto read = fg::manifest_from_json(m, diag);
+    ASSERT_TRUE(read) << diag.format();
+    EXPECT_TRUE(read->scene.locomotion == fg::LocomotionSettings{});
+    m["scene"]["locomotion"] = {{"max_speed", 4.0}};
+    read = fg::manifest_from_json(m, diag);
+    ASSERT_TRUE(read) << diag.format();
+    EXPECT_EQ(read->scene.locomotion.max_speed, 4.0);
+
+    m["scene"]["locomotion"] = {{"max_sped", 4.0}};
+    fg::Diagnostics bad;
+    EXPECT_FALSE(fg::manifest_from_json(m, bad));
+    EXPECT_TRUE(has_error(bad, "/manifest/scene/locomotion/max_sped", "", "unknown scene setting")) << bad.format();
+}
+
+TEST(SceneSettings, each_parse_is_counted) {
+    const auto before = fg::scene_settings_parse_count();
+    fg::Diagnostics diag;
+    json scene = {{"exposure", 1.5}};
+    fg::parse_scene_settings(&scene, "/scene", diag);
+    EXPECT_EQ(fg::scene_settings_parse_count(), before + 1);
+}
+
+}  // namespace
