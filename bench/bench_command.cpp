@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "sequence_runner.h"
+
 namespace fg::bench {
 
 void add_bench_command(CLI::App& app, BenchCommand& c) {
@@ -17,15 +19,18 @@ void add_bench_command(CLI::App& app, BenchCommand& c) {
     bench->add_option("--view", b.views, "afar, filled, grazing, deep_zoom (repeatable; default all)");
     bench->add_option("--device", b.device, "Vulkan device: index or name substring");
     bench->add_flag("--no-plots", c.no_plots, "skip the matplotlib plots");
+    bench->add_flag("--sequence", b.sequence, "head traces at 90 Hz per scene and setting (--frames per trace, default 90)");
+    bench->add_option("--trace", b.traces, "with --sequence: look_around, walk, fast_turn, flight, snap_turn (repeatable)");
+    bench->add_option("--scene", b.scenes, "with --sequence: a graph or pack (repeatable; default the gallery's bulb, box, Kleinian)");
 }
 
 int BenchCommand::run() {
-    if (options.pack.empty() == options.graph.empty()) {
+    if (!options.sequence && options.pack.empty() == options.graph.empty()) {
         fmt::print(stderr, "fgplay bench: give a pack or --graph, not both\n");
         return 2;
     }
     options.plots = !no_plots;
-    return run_bench(options);
+    return options.sequence ? run_sequence_bench(options) : run_bench(options);
 }
 
 }  // namespace fg::bench

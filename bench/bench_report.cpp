@@ -6,16 +6,11 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <set>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
-#include "common/embedded_file.h"
 #include "frame/trade_off_front.h"
-
-namespace fg {
-std::span<const EmbeddedFile> embedded_bench_scripts();   // generated (bench/fg_bench.cmake)
-}
+#include "plot_script.h"
 
 namespace fg::bench {
 
@@ -143,20 +138,8 @@ void BenchReport::write(const std::string& folder) const {
 }
 
 void BenchReport::plot(const std::string& folder) const {
-    // The script is inside the binary (bench/fg_bench.cmake), so no source tree is needed: it runs
-    // from a temporary copy.
-    std::string_view script;
-    for (const auto& f : embedded_bench_scripts())
-        if (f.path == "plot_bench.py") script = f.text;
-    const auto copy = std::filesystem::temp_directory_path() / fmt::format("fgplay_plot_bench_{}.py", getpid());
-    std::ofstream(copy, std::ios::binary) << script;
-    std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    std::string cmd = fmt::format("{} '{}' '{}'", python, copy.string(), folder);
-    std::fflush(stdout);
-    if (script.empty() || std::system(cmd.c_str()) != 0)
+    if (!run_plot_script("plot_bench.py", folder))
         fmt::print("note: plotting failed (it needs python3-matplotlib); results.json holds every figure\n");
-    std::error_code ignored;
-    std::filesystem::remove(copy, ignored);
 }
 
 std::string BenchReport::summary_line() const {

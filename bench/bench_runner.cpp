@@ -20,32 +20,13 @@
 #include "frame/headless_renderer.h"
 #include "frame/lens_mask.h"
 #include "frame/strict_reference.h"
+#include "frame_measures.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
 
 namespace fg::bench {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
-// Over the visible pixels only, when `visible` (lens_mask.h) is given.
-double psnr(const Rgba8Image& a, const Rgba8Image& b, std::span<const std::uint8_t> visible) {
-    double se = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-        if (i % 4 == 3 || (i / 4 < visible.size() && !visible[i / 4])) continue;
-        double d = static_cast<double>(a.pixels[i]) - b.pixels[i];
-        se += d * d;
-        ++n;
-    }
-    if (se == 0.0) return 99.0;
-    return 10.0 * std::log10(255.0 * 255.0 / (se / static_cast<double>(n)));
-}
 
 struct Reference {
     RenderedFrame frame;

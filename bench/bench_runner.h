@@ -19,6 +19,10 @@ struct BenchOptions {
     std::vector<std::string> views;   // subset of afar, filled, grazing, deep_zoom; empty: all (quick: afar, filled)
     std::string device;
     bool plots = true;
+    // `--sequence`: head traces at 90 Hz instead (run_sequence_bench, sequence_runner.h), over
+    // `scenes` (graphs or packs; empty: the gallery's bulb, box and Kleinian) and `traces` (empty: all).
+    bool sequence = false;
+    std::vector<std::string> scenes, traces;
 };
 
 int run_bench(const BenchOptions& options);

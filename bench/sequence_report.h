@@ -1,0 +1,62 @@
+#pragma once
+// Results of `fgplay bench --sequence`: one row per (scene, trace, setting) with its frames kept,
+// written as sequence.csv, sequence_frames.csv (every frame) and sequence.md, plotted by
+// bench/plot_sequence.py.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "frame/frame_executor.h"
+#include "sequence_settings.h"
+
+namespace fg::bench {
+
+struct SequenceFrame {
+    int index = 0;
+    bool dark = false;     // brightness 0: nothing rendered, nothing measured
+    double gpu_ms = 0.0;   // FrameStats.gpu_ms "frame" of the timed renderer
+    double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
+    std::size_t not_finite = 0;
+    double evaluations_per_pixel = -1.0;   // from the counting renderer; < 0 on frames it skipped
+};
+
+struct SequenceRow {
+    std::string scene, trace;
+    SequenceSetting setting;
+    std::vector<SequenceFrame> frames;
+    std::vector<std::string> counter_groups;   // of the counting frames: one lane column each
+    std::map<std::string, LaneCount> lanes;    // summed over the counting frames; empty where not counted
+    double reuse_skipped_fraction = 0.0;       // of each ray, skipped through cross-frame reuse (no reuse yet)
+    // Over the frames rendered (not dark): filled by summarize().
+    double median_ms = 0.0, p99_ms = 0.0, worst_ms = 0.0, evaluations_per_pixel = 0.0;
+    double misclassified_mean = 0.0, misclassified_worst = 0.0, overstepped_mean = 0.0, overstepped_worst = 0.0;
+    double psnr_mean = 0.0, psnr_worst = 0.0;
+    std::size_t not_finite_worst = 0;
+    int rendered = 0, dark = 0, counted = 0;
+    // Baseline time / this time, same scene, trace and pixel set; 0 where the baseline is missing.
+    double speedup_median_naive = 0.0, speedup_p99_naive = 0.0;
+    double speedup_median_naive_lanes = 0.0, speedup_p99_naive_lanes = 0.0;
+    std::string error;
+
+    void summarize();
+    std::string brief() const;
+};
+
+struct SequenceReport {
+    std::string device;
+    std::uint32_t size = 0;
+    int frames = 0, count_every = 1;
+    // How busy the machine was: timings on a CPU device (lavapipe) share its cores with everything else.
+    double load_start = -1.0, load_end = -1.0, wall_s = 0.0;
+    std::vector<std::pair<std::string, std::string>> traces;   // name, motion
+    std::vector<SequenceRow> rows;
+
+    void fill_speedups();
+    void write(const std::string& folder) const;
+    void plot(const std::string& folder) const;
+    // Per scene and trace: per-eye conemarch against naive, median and p99, on all pixels and masked.
+    std::string headline() const;
+};
+
+}  // namespace fg::bench
