@@ -15,10 +15,7 @@
 #include "frame/frame_governor.h"
 #include "frame/trade_off_ladder.h"
 #include "locomotion/collision_witness.h"
-#include "locomotion/comfort_vignette.h"
-#include "locomotion/probed_flight.h"
-#include "locomotion/snap_turn.h"
-#include "locomotion/world_scale.h"
+#include "locomotion/viewer_step.h"
 #include "graph/scene_settings.h"
 #include "image_output.h"
 #include "vk/vulkan_error.h"
@@ -114,11 +111,14 @@ int view(const ViewOptions& o) {
         SceneSettings scene = playing.pack->manifest.scene;
         fmt::print("fgplay view: {} on {} ({:.0f} ms to load, {:.0f} ms for pipelines)\n", o.path, ctx.device_name(),
                    playing.compile_ms, playing.pipelines_ms);
+        // The mouse turns the head; the play space (viewer_step.h) sits at the head's position
+        // without turning it, so the keys fly in the scene's own up and level.
         FlyCamera camera(look_at(scene.camera.position, scene.camera.target, scene.camera.up));
-        auto make_flight = [&] {
-            return std::make_unique<ProbedFlight>(ctx, *playing.pack, scene.locomotion, scene.world_scale);
+        auto make_step = [&](const glm::dvec3& at) {
+            return std::make_unique<ViewerStep>(ctx, *playing.pack, HeadPose{at, glm::dquat(1.0, 0.0, 0.0, 0.0)}, true);
         };
-        std::unique_ptr<ProbedFlight> flight = make_flight();
+        std::unique_ptr<ViewerStep> step = make_step(scene.camera.position);
+        HeadPose head = camera.pose();
         std::unique_ptr<CollisionWitness> witness;
         if (o.check_collisions) witness = std::make_unique<CollisionWitness>(*playing.pack);
 
@@ -127,9 +127,7 @@ int view(const ViewOptions& o) {
         glfwSetScrollCallback(presenter.window(), on_scroll);
         glfwSetKeyCallback(presenter.window(), on_key);
         bool side_by_side = o.side_by_side;
-        SnapTurn snap;
-        WorldScale world_scale(scene.world_scale);
-        double scale_first = scene.world_scale, scale_step_max = 0.0;
+        double scale_first = scene.world_scale;
         double throttle = 1.0;   // the scroll wheel's share of the distance-proportional speed
         double last_x = 0.0, last_y = 0.0;
         glfwGetCursorPos(presenter.window(), &last_x, &last_y);
@@ -157,37 +155,34 @@ int view(const ViewOptions& o) {
             double fwd = key(GLFW_KEY_W) - key(GLFW_KEY_S), right = key(GLFW_KEY_D) - key(GLFW_KEY_A), up = key(GLFW_KEY_E) - key(GLFW_KEY_Q);
             glm::dmat3 basis = glm::mat3_cast(camera.pose().orientation);
             glm::dvec3 dir = fwd * -basis[2] + right * basis[0] + up * glm::dvec3(0.0, 1.0, 0.0);
-            double thrust = glm::length(dir) > 0.0 ? throttle : 0.0;
+            ViewerControls controls;
+            // Tests fly at a fixed 90 Hz so that runs repeat; people fly in real time.
+            controls.dt = o.frames > 0 ? 1.0 / 90.0 : dt;
+            controls.tracked_orientation = camera.pose().orientation;
+            controls.ipd_m = stereo.ipd_m;
+            controls.throttle = glm::length(dir) > 0.0 ? throttle : 0.0;
             if (o.autopilot > 0.0) {
                 dir = -basis[2];
-                thrust = o.autopilot;
+                controls.throttle = o.autopilot;
             }
-            if (glm::length(dir) > 0.0) dir = glm::normalize(dir);
-            // Arrow keys snap-turn (faded, about the camera); -/= shrink or grow the viewer.
-            const double step_dt = o.frames > 0 ? 1.0 / 90.0 : dt;
+            controls.fly_direction = glm::length(dir) > 0.0 ? glm::normalize(dir) : dir;
+            // Arrow keys snap-turn (faded, about the head); -/= shrink or grow the viewer.
             auto held = [&](int k, const char* name) { return key(k) > 0.0 || scripted(o.press, name, frames + 1); };
-            const double turn_stick = (held(GLFW_KEY_RIGHT, "right") ? 1.0 : 0.0) - (held(GLFW_KEY_LEFT, "left") ? 1.0 : 0.0);
-            const SnapTurnFrame snapped = snap.update(turn_stick, step_dt);
-            if (snapped.yaw_rad != 0.0) camera.turn(snapped.yaw_rad);
-            const double scale_stick = (held(GLFW_KEY_EQUAL, "grow") ? 1.0 : 0.0) - (held(GLFW_KEY_MINUS, "shrink") ? 1.0 : 0.0);
-            const double scale_before = world_scale.current();
-            world_scale.update(scale_stick, step_dt, camera.pose().position, stereo.ipd_m, flight->locomotion().head_radius_m(),
-                               flight->locomotion().guaranteed_clearance(camera.pose().position));
-            if (world_scale.current() != scale_before) {
-                flight->set_world_scale(world_scale.current());
-                scale_step_max = std::max(scale_step_max, std::abs(world_scale.current() / scale_before - 1.0));
-            }
-            // Tests fly at a fixed 90 Hz so that runs repeat; people fly in real time.
-            camera.set_position(flight->update(camera.pose().position, dir, thrust, step_dt));
-            if (witness) witness->observe(camera.pose().position);
+            controls.turn_stick = (held(GLFW_KEY_RIGHT, "right") ? 1.0 : 0.0) - (held(GLFW_KEY_LEFT, "left") ? 1.0 : 0.0);
+            controls.scale_stick = (held(GLFW_KEY_EQUAL, "grow") ? 1.0 : 0.0) - (held(GLFW_KEY_MINUS, "shrink") ? 1.0 : 0.0);
+            controls.look_rate = turn;
+            const ViewerFrame viewer = step->step(controls);
+            head = viewer.head;
+            if (witness) witness->observe(head.position);
 
             std::string error;
             if (auto fresh = source.poll(error)) {
                 ctx.wait_idle();
                 playing = std::move(*fresh);
                 scene = playing.pack->manifest.scene;
-                flight = make_flight();
-                world_scale = WorldScale(scene.world_scale);
+                // The new pack's flight starts where the viewer is, looking where it looks.
+                camera = FlyCamera(head);
+                step = make_step(head.position);
                 status = fmt::format("reloaded {} in {:.0f} ms + {:.0f} ms pipelines", playing.pack->manifest.name, playing.compile_ms,
                                      playing.pipelines_ms);
                 fmt::print("fgplay view: {}\n", status);
@@ -197,34 +192,20 @@ int view(const ViewOptions& o) {
                 fmt::print(stderr, "fgplay view: compile error (the previous pack keeps playing):\n{}\n", error);
             }
 
-            stereo.world_scale = world_scale.current();
-            StereoViews views = make_stereo_views(camera.pose(), fov_of(scene), fov_of(scene), stereo);
+            stereo.world_scale = viewer.world_scale;
+            StereoViews views = make_stereo_views(head, fov_of(scene), fov_of(scene), stereo);
             FrameSettings this_frame = frame;
             this_frame.camera_relative = playing.executor->graph().settings.camera_relative;   // a double pack
-            playing.executor->set_frame(make_gpu_frame(views, this_frame, frames / 60.0, world_scale.current(),
+            playing.executor->set_frame(make_gpu_frame(views, this_frame, frames / 60.0, viewer.world_scale,
                                                        static_cast<std::uint32_t>(frames)));
-            // Flying and mouse-look are both artificial motion: both drive the comfort vignette. A
-            // snap turn fades the image.
-            GpuScene scene_gpu = make_gpu_scene(scene);
-            if (scene_gpu.vignette > 0.0f)
-                scene_gpu.vignette = static_cast<float>(comfort_vignette(
-                    glm::length(flight->locomotion().velocity()) / world_scale.current(), turn, scene_gpu.vignette));
-            scene_gpu.fade = static_cast<float>(1.0 - snapped.brightness);
-            playing.executor->set_scene(scene_gpu);
+            playing.executor->set_scene(viewer.scene);
             FrameStats stats = playing.executor->run();
             ++frames;
             if (governor) {
                 auto gpu = stats.gpu_ms.find("frame");
                 if (gpu != stats.gpu_ms.end() && governor->observe(gpu->second, o.budget_ms)) {
                     // A new level takes effect from the next frame: new sizes and pipelines.
-                    const GovernorLevel& level = governor->current();
-                    frame = full_accuracy;
-                    frame.width = std::max(8u, static_cast<std::uint32_t>(std::lround(o.width * level.render_scale)));
-                    frame.height = std::max(8u, static_cast<std::uint32_t>(std::lround(o.height * level.render_scale)));
-                    frame.foveation = level.foveation;
-                    frame.stereo = level.stereo.value_or(full_accuracy.stereo);
-                    frame.cone_levels = level.cone_levels.value_or(full_accuracy.cone_levels);
-                    for (const auto& [k, v] : level.knobs) frame.knobs[k] = v;
+                    frame = settings_at_level(full_accuracy, governor->current(), o.width, o.height);
                     stereo.width = frame.width;
                     stereo.height = frame.height;
                     ctx.wait_idle();
@@ -242,7 +223,7 @@ int view(const ViewOptions& o) {
                               last_frame && !o.screenshot.empty() ? &shot : nullptr);
             std::string title = fmt::format("fgplay view - {} - {} - {} - clearance {:.3g}{}{}{}", playing.pack->manifest.name,
                                             side_by_side ? "side by side" : "left eye", pass_times(stats),
-                                            flight->locomotion().guaranteed_clearance(camera.pose().position),
+                                            step->locomotion().guaranteed_clearance(head.position),
                                             governor ? fmt::format(" - governor level {}/{} ({})", governor->level(),
                                                                    governor->levels() - 1, governor->current().describe())
                                                      : std::string(),
@@ -257,10 +238,12 @@ int view(const ViewOptions& o) {
                 fmt::print("screenshot: {} ({}x{})\n", o.screenshot, shot.width, shot.height);
             }
         }
-        flight.reset();
+        const int snap_turns = step->snap().turns();
+        const double scale_last = step->play_space().world_scale(), scale_step_max = step->largest_scale_change();
+        step.reset();
         ctx.wait_idle();
-        fmt::print("snap turns: {}; world scale: {:.4g} -> {:.4g}, largest change per frame {:.2f} %\n", snap.turns(), scale_first,
-                   world_scale.current(), 100.0 * scale_step_max);
+        fmt::print("snap turns: {}; world scale: {:.4g} -> {:.4g}, largest change per frame {:.2f} %\n", snap_turns, scale_first,
+                   scale_last, 100.0 * scale_step_max);
         if (witness) fmt::print("{}\n", witness->summary());
         // Once per pack read (and per compile with --watch), never per frame: the tests hold it to that.
         fmt::print("scene settings decoded: {}\n", scene_settings_parse_count());

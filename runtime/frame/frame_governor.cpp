@@ -1,6 +1,7 @@
 #include "frame/frame_governor.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -82,6 +83,18 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
     message_ = fmt::format("level {} ({}): {:.1f} ms of GPU time per frame, {} the {:.3g} ms budget", level_, current().describe(),
                            mean, why, budget_ms);
     return true;
+}
+
+FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& level, std::uint32_t width,
+                                std::uint32_t height) {
+    FrameSettings f = full;
+    f.width = std::max(8u, static_cast<std::uint32_t>(std::lround(width * level.render_scale)));
+    f.height = std::max(8u, static_cast<std::uint32_t>(std::lround(height * level.render_scale)));
+    f.foveation = level.foveation;
+    f.stereo = level.stereo.value_or(full.stereo);
+    f.cone_levels = level.cone_levels.value_or(full.cone_levels);
+    for (const auto& [k, v] : level.knobs) f.knobs[k] = v;
+    return f;
 }
 
 }  // namespace fg

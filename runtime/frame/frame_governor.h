@@ -34,6 +34,11 @@ struct GovernorLevel {
 // not have are left out, and values stay inside each knob's range.
 std::vector<GovernorLevel> governor_ladder(const PackManifest& manifest);
 
+// The frame settings at `level`: `full` (full accuracy) at the level's render scale of `width` x
+// `height`, with its foveation, and its stereo mode, cone levels and knobs where it sets them.
+FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& level, std::uint32_t width,
+                                std::uint32_t height);
+
 struct GovernorSettings {
     int window = 3;          // frames whose median GPU time is judged
     int down_after = 2;      // consecutive averages over budget before stepping down

@@ -12,15 +12,10 @@
 #include "frame/frame_executor.h"
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
-#include "locomotion/comfort_vignette.h"
-#include "locomotion/play_space.h"
-#include "locomotion/probed_flight.h"
-#include "locomotion/snap_turn.h"
-#include "locomotion/world_scale.h"
+#include "locomotion/viewer_step.h"
 #include "pack/pack_reader.h"
 #include "vk/vulkan_error.h"
 #include "xr/controller_actions.h"
-#include "locomotion/head_in_surface_fade.h"
 #include "xr/depth_layer.h"
 #include "xr/eye_swapchain.h"
 #include "frame/frame_governor.h"
@@ -56,10 +51,6 @@ public:
         : instance_(instance), ctx_(ctx), pack_(pack), options_(o) {
         scene_ = pack.manifest.scene;
         origin_ = look_at(scene_.camera.position, scene_.camera.target, scene_.camera.up);
-        scene_gpu_ = make_gpu_scene(scene_);
-        play_ = PlaySpace(origin_, scene_.world_scale);
-        scale_ = WorldScale(scene_.world_scale);
-        if (pack.manifest.period) period_ = glm::dvec3((*pack.manifest.period)[0], (*pack.manifest.period)[1], (*pack.manifest.period)[2]);
 
         XrGraphicsBindingVulkan2KHR binding = graphics_binding(ctx);
         XrSessionCreateInfo si{XR_TYPE_SESSION_CREATE_INFO};
@@ -106,12 +97,12 @@ public:
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         stereo_.world_scale = scene_.world_scale;
-        flight_ = std::make_unique<ProbedFlight>(ctx, pack, scene_.locomotion, scene_.world_scale);
+        step_ = std::make_unique<ViewerStep>(ctx, pack, origin_, o.wrap);
         if (o.check_collisions) witness_ = std::make_unique<CollisionWitness>(pack);
     }
 
     ~XrPlayer() {
-        flight_.reset();
+        step_.reset();
         executor_.reset();
         for (auto& s : swapchains_) s.reset();
         actions_.reset();
@@ -156,19 +147,21 @@ public:
 
     // What the controls did over the session, for the log.
     std::string locomotion_summary() const {
-        std::string out = fmt::format("snap turns: {} ({} frames black)\n", snap_.turns(), stats_.dark_frames - stats_.inside_black_frames);
+        std::string out = fmt::format("snap turns: {} ({} frames black)\n", step_->snap().turns(),
+                                      stats_.dark_frames - stats_.inside_black_frames);
         out += fmt::format("head in the surface: {} frames faded (darkest {:.2f}), {} black\n", stats_.inside_frames,
                            stats_.darkest_inside, stats_.inside_black_frames);
         out += fmt::format("world scale: {:.4g} -> {:.4g} (eye separation {:.4g} -> {:.4g} scene units), largest change per "
                            "frame {:.2f} %{}\n",
-                           scale_first_, play_.world_scale(), ipd_first_, ipd_last_, 100.0 * scale_step_max_,
-                           *scale_limit_ ? fmt::format(", held by the {}", scale_limit_) : std::string());
-        const glm::dvec3 axes = glm::inverse(origin_.orientation) * flown_;
+                           scale_first_, step_->play_space().world_scale(), ipd_first_, ipd_last_,
+                           100.0 * step_->largest_scale_change(),
+                           *step_->scale_limit() ? fmt::format(", held by the {}", step_->scale_limit()) : std::string());
+        const glm::dvec3 axes = glm::inverse(origin_.orientation) * step_->flown();
         out += fmt::format("flight: {:.3f} {:.3f} {:.3f} scene units along the scene camera's right, up, back; the head's "
                            "largest coordinate {:.3g}\n",
-                           axes.x, axes.y, axes.z, head_extent_);
-        if (period_)
-            out += fmt::format("looping scene: period {:g} x {:g} x {:g}, {} wraps{}\n", period_->x, period_->y, period_->z, wraps_,
+                           axes.x, axes.y, axes.z, step_->head_extent());
+        if (const auto& period = step_->period())
+            out += fmt::format("looping scene: period {:g} x {:g} x {:g}, {} wraps{}\n", period->x, period->y, period->z, step_->wraps(),
                                options_.wrap ? "" : " (wrapping off)");
         return out;
     }
@@ -249,70 +242,40 @@ private:
         last_time_ = time;
         const ControllerState input = actions_ ? actions_->sync(space_, time) : ControllerState{};
 
-        const SnapTurnFrame turn = snap_.update(input.turn.x, dt);
-        if (turn.yaw_rad != 0.0) play_.turn_about(tracked_head, turn.yaw_rad);
-        const double ipd_m = glm::length(eye_r - eye_l);
-        const double before = play_.world_scale();
-        const double scale = scale_.update(input.scale.y, dt, play_.point(tracked_head), ipd_m, flight_->locomotion().head_radius_m(),
-                                           flight_->locomotion().guaranteed_clearance(play_.point(tracked_head)));
-        if (scale != before) {
-            play_.rescale_about(tracked_head, scale);
-            flight_->set_world_scale(scale);
-            scale_step_max_ = std::max(scale_step_max_, std::abs(scale / before - 1.0));
-            if (*scale_.limited_by()) scale_limit_ = scale_.limited_by();
-        }
-        HeadPose head;
-        head.orientation = play_.orientation(glm::normalize(to_glm(views[0].pose.orientation)));
-        head.position = play_.point(tracked_head);
         // Flight: the trigger flies along the controller's aim (the gaze when the aim is not
         // tracked); without it, `--fly` flies along the gaze.
-        glm::dvec3 direction = glm::mat3_cast(head.orientation) * glm::dvec3(0.0, 0.0, -1.0);
-        double throttle = options_.fly;
+        ViewerControls controls;
+        controls.dt = dt;
+        controls.tracked_head = tracked_head;
+        controls.tracked_orientation = to_glm(views[0].pose.orientation);
+        controls.ipd_m = glm::length(eye_r - eye_l);
+        controls.turn_stick = input.turn.x;
+        controls.scale_stick = input.scale.y;
+        controls.throttle = options_.fly;
         if (input.fly > 0.05) {
-            throttle = input.fly * options_.controller_speed;
-            if (input.aim_valid) direction = play_.direction(input.aim_orientation * glm::dvec3(0.0, 0.0, -1.0));
+            controls.throttle = input.fly * options_.controller_speed;
+            if (input.aim_valid) controls.fly_direction = input.aim_orientation * glm::dvec3(0.0, 0.0, -1.0);
         }
-        // The tracked head's own motion in the scene (not flight, turns or scaling, which move the
-        // play space): the look-ahead probe leads it.
-        const glm::dvec3 tracked_velocity =
-            dt > 0.0 && have_tracked_ ? play_.direction(tracked_head - last_tracked_head_) * play_.world_scale() / dt : glm::dvec3(0.0);
-        last_tracked_head_ = tracked_head;
-        have_tracked_ = true;
-        glm::dvec3 moved = flight_->update(head.position, direction, throttle, dt, tracked_velocity);
-        play_.move(moved - head.position);
-        flown_ += moved - head.position;
-        head.position = moved;
-        // A looping scene: whole periods off the head before it is rendered, so its coordinates
-        // stay inside one cell however far it flies. The probes' answers move with it.
-        if (period_ && options_.wrap) {
-            const glm::dvec3 shift = play_.wrap(tracked_head, *period_);
-            if (shift != glm::dvec3(0.0)) {
-                flight_->translate(-shift);
-                head.position -= shift;
-                ++wraps_;
-            }
-        }
+        const double scale_before = step_->play_space().world_scale();
+        const ViewerFrame viewer = step_->step(controls);
+        const HeadPose& head = viewer.head;
         if (witness_) witness_->observe(head.position);
-        for (int i = 0; i < 3; ++i) head_extent_ = std::max(head_extent_, std::abs(head.position[i]));
-        stereo_.ipd_m = ipd_m;
-        stereo_.world_scale = play_.world_scale();
+        stereo_.ipd_m = controls.ipd_m;
+        stereo_.world_scale = viewer.world_scale;
         if (ipd_first_ < 0.0) {
-            ipd_first_ = ipd_m * play_.world_scale();
-            scale_first_ = before;
+            ipd_first_ = controls.ipd_m * viewer.world_scale;
+            scale_first_ = scale_before;
         }
-        ipd_last_ = ipd_m * play_.world_scale();
-        // A head walked or leant into the surface (flight never takes it there) sees black.
-        const double inside = head_in_surface_brightness(flight_->locomotion().answers(), head.position,
-                                                         flight_->locomotion().head_radius_m() * play_.world_scale());
-        if (inside < 1.0) {
+        ipd_last_ = controls.ipd_m * viewer.world_scale;
+        if (viewer.inside_brightness < 1.0) {
             ++stats_.inside_frames;
-            stats_.darkest_inside = std::min(stats_.darkest_inside, inside);
+            stats_.darkest_inside = std::min(stats_.darkest_inside, viewer.inside_brightness);
         }
-        const double brightness = std::min(turn.brightness, inside);
-        // Black at the middle of a snap turn: the compositor shows black without a layer.
-        if (turn.brightness <= 0.0 || inside <= 0.0) {
+        // Black at the middle of a snap turn, or a head inside the surface: the compositor shows
+        // black without a layer.
+        if (viewer.brightness <= 0.0) {
             ++stats_.dark_frames;
-            if (turn.brightness > 0.0) ++stats_.inside_black_frames;
+            if (viewer.snap_brightness > 0.0) ++stats_.inside_black_frames;
             return false;
         }
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
@@ -331,7 +294,7 @@ private:
         if (first_time_ == 0) first_time_ = time;
         FrameSettings this_frame = frame_;
         this_frame.camera_relative = executor_->graph().settings.camera_relative;   // a double pack
-        GpuFrame gpu = make_gpu_frame(sv, this_frame, static_cast<double>(time - first_time_) * 1e-9, play_.world_scale(),
+        GpuFrame gpu = make_gpu_frame(sv, this_frame, static_cast<double>(time - first_time_) * 1e-9, viewer.world_scale,
                                       static_cast<std::uint32_t>(stats_.frames));
         // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
         // pixels outside it are never marched.
@@ -341,17 +304,7 @@ private:
                 gpu.views[eye].lens_radii = {static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
             }
         executor_->set_frame(gpu);
-        // Flight (not the tracked head) drives the comfort vignette, where the scene has one; a snap
-        // turn fades the image on its way to and from black.
-        if (scene_gpu_.vignette > 0.0f || brightness < 1.0 || faded_) {
-            GpuScene sc = scene_gpu_;
-            if (scene_gpu_.vignette > 0.0f)
-                sc.vignette = static_cast<float>(comfort_vignette(glm::length(flight_->locomotion().velocity()) / play_.world_scale(),
-                                                                  0.0, scene_gpu_.vignette));
-            sc.fade = static_cast<float>(1.0 - brightness);
-            faded_ = brightness < 1.0;
-            executor_->set_scene(sc);
-        }
+        executor_->set_scene(viewer.scene);
         FrameStats fs = executor_->run();
         if (options_.governor) govern(fs, period_ns);
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
@@ -401,13 +354,11 @@ private:
     }
 
     void apply(const GovernorLevel& level) {
-        frame_.width = std::max(8u, static_cast<std::uint32_t>(std::lround(base_width_ * level.render_scale)));
-        frame_.height = std::max(8u, static_cast<std::uint32_t>(std::lround(base_height_ * level.render_scale)));
-        frame_.foveation = level.foveation;
-        frame_.stereo = level.stereo.value_or(options_.stereo);
-        frame_.cone_levels = level.cone_levels.value_or(options_.cone_levels);
-        frame_.knobs = options_.knobs;
-        for (const auto& [k, v] : level.knobs) frame_.knobs[k] = v;
+        FrameSettings full = frame_;
+        full.stereo = options_.stereo;
+        full.cone_levels = options_.cone_levels;
+        full.knobs = options_.knobs;
+        frame_ = settings_at_level(full, level, base_width_, base_height_);
     }
 
     // XR_KHR_composition_layer_depth where the runtime has it, in a depth format it lists.
@@ -462,7 +413,6 @@ private:
     XrPlayOptions options_;
     SceneSettings scene_;
     HeadPose origin_;
-    GpuScene scene_gpu_{};
     XrSession session_ = XR_NULL_HANDLE;
     XrSpace space_ = XR_NULL_HANDLE;
     std::int64_t format_ = 0;
@@ -475,20 +425,9 @@ private:
     std::unique_ptr<FrameExecutor> executor_;
     std::uint32_t centre_width_ = 0, centre_height_ = 0;
     XrTime first_time_ = 0, last_time_ = 0;
-    PlaySpace play_{HeadPose{}, 1.0};
     std::unique_ptr<ControllerActions> actions_;
-    SnapTurn snap_;
-    WorldScale scale_{1.0};
-    std::optional<glm::dvec3> period_;
-    bool faded_ = false;
-    glm::dvec3 last_tracked_head_{0.0};
-    bool have_tracked_ = false;
-    int wraps_ = 0;
-    glm::dvec3 flown_{0.0};
-    double head_extent_ = 0.0;
-    double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0, scale_step_max_ = 0.0;
-    const char* scale_limit_ = "";
-    std::unique_ptr<ProbedFlight> flight_;
+    double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0;
+    std::unique_ptr<ViewerStep> step_;
     std::unique_ptr<FrameGovernor> governor_;
     std::uint32_t base_width_ = 0, base_height_ = 0;
     bool rebuild_ = false;
