@@ -58,6 +58,7 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
         knob("epsilon", {1.0});
         knob("fine_steps", {16});
         knob("overrelax", {1.4});
+        knob("persistent_lanes", {1});
         mode("reproject", StereoMode::Reproject);
         mode("reproject, trusting depth", StereoMode::Reproject, {{"reproject_trust_depth", 1}});
         return out;
@@ -83,6 +84,13 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     knob("cone_stop", {1.1, 3.0});
     knob("overrelax", {1.2, 1.5});
     knob("tail_after", {8, 16});
+    knob("persistent_lanes", {1});
+    {
+        // The second baseline: naive sphere tracing with persistent lanes.
+        FrameSettings f = naive;
+        f.knobs["persistent_lanes"] = 1;
+        add("persistent_lanes", "naive, persistent_lanes=1", f);
+    }
     knob("normal_taps", {6});
     knob("shade_reuse", {1.0, 4.0});
     pixels(true, 0.0);

@@ -57,9 +57,13 @@ int render(const RenderOptions& o) {
                 evals += fmt::format(" {} {:.2f},", group, static_cast<double>(n) / (2.0 * o.width * o.height));
             fmt::print("frame {}: {} stereo {}x{} per eye; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height,
                        times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
-            if (o.count)
+            if (o.count) {
                 fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,
                            evals.empty() ? "" : evals.substr(1, evals.size() - 2));
+                std::string lanes;
+                for (const auto& [group, count] : r.stats.lanes) lanes += fmt::format(", {} {:.2f}", group, count.efficiency());
+                if (!lanes.empty()) fmt::print("  SIMD lanes busy: {}\n", lanes.substr(2));
+            }
         }
         if (validation_failed(ctx)) return 1;
         fmt::print("images in {}/: left.png right.png side_by_side.png{}\n", o.out, o.depth ? " depth_left.png depth_right.png" : "");

@@ -68,7 +68,8 @@ struct FgFineRay {
     vec2 range;
     float cone;
     float t;
-    float bound;         // where the pixel's cone first touched
+    float bound;         // where the pixel's cone first touched (the centre eye: its steps keep the cone safe)
+    float covered;       // an eye: how far the balls of its samples so far prove the pixel's cone empty
     float closest;
     float previous;
     float step;
@@ -99,6 +100,7 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
     r.cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
     r.t = max(parent, r.range.x);
     r.bound = fg_escaped();
+    r.covered = parent;   // the parent's cone holds this pixel's cone
     r.closest = 1e30;
     r.previous = 0.0;
     r.step = 0.0;
@@ -109,6 +111,16 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
     r.deferred = false;
     r.marching = r.range.x <= r.range.y && r.t <= r.range.y && FG_FINE_STEPS > 0;
     return r;
+}
+
+// An eye marches its own ray with plain steps, and its samples still certify its pixel's cone: the
+// ball of radius d at t holds every point of the cone (radius c t') at t' with |t' - t| + c t' <= d,
+// that is t' in [(t - d) / (1 - c), (t + d) / (1 + c)]. Where that reaches back to what is covered
+// already, the cover grows; cross-frame reuse reads it as the pixel's bound. Returns d.
+float fg_cover(inout FgFineRay r, float d)
+{
+    if ((r.t - d) / (1.0 - r.cone) <= r.covered) r.covered = max(r.covered, (r.t + d) / (1.0 + r.cone));
+    return d;
 }
 
 void fg_fine_step(inout FgFineRay r)
@@ -132,7 +144,7 @@ void fg_fine_step(inout FgFineRay r)
         r.marching = ++r.i < FG_FINE_STEPS;
         return;
     }
-    r.closest = min(r.closest, d);
+    r.closest = min(r.closest, fg_cover(r, d));
     float radius = r.cone * r.t;
     if (r.bound > r.range.y && (pc.view != FG_VIEW_CENTRE || d <= FG_CONE_STOP * radius)) r.bound = r.t;
     if (d < FG_EPSILON * radius) {
@@ -152,7 +164,7 @@ void fg_fine_step(inout FgFineRay r)
 void fg_fine_finish(FgFineRay r)
 {
     float result = FG_MISS;
-    float bound = r.bound;
+    float bound = pc.view == FG_VIEW_CENTRE ? r.bound : r.covered;
     bool capped = !r.hit && !r.escaped && !r.deferred && r.i == FG_FINE_STEPS;
     if (r.hit || (capped && !FG_MISS_ON_STEP_CAP)) result = r.t;
     if (result != FG_MISS) bound = min(bound, result);
