@@ -114,12 +114,14 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
 }
 
 // An eye marches its own ray with plain steps, and its samples still certify its pixel's cone: the
-// ball of radius d at t holds every point of the cone (radius c t') at t' with |t' - t| + c t' <= d,
-// that is t' in [(t - d) / (1 - c), (t + d) / (1 + c)]. Where that reaches back to what is covered
-// already, the cover grows; cross-frame reuse reads it as the pixel's bound. Returns d.
+// ball of radius d at t holds every point of the cone (radius c t' + s, s the spread of the rays'
+// origins in ODS) at t' with |t' - t| + c t' + s <= d, that is t' in [(t - d + s) / (1 - c),
+// (t + d - s) / (1 + c)]. Where that reaches back to what is covered already, the cover grows: the
+// pixel's own cone bound, which an eye's level 0 records. Returns d.
 float fg_cover(inout FgFineRay r, float d)
 {
-    if ((r.t - d) / (1.0 - r.cone) <= r.covered) r.covered = max(r.covered, (r.t + d) / (1.0 + r.cone));
+    float s = fg_origin_spread(pc.view, 0);
+    if ((r.t - d + s) / (1.0 - r.cone) <= r.covered) r.covered = max(r.covered, (r.t + d - s) / (1.0 + r.cone));
     return d;
 }
 
