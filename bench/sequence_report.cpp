@@ -74,6 +74,7 @@ void SequenceRow::summarize() {
     p99_ms = percentile(ms, 99.0);
     worst_ms = largest(ms);
     evaluations_per_pixel = mean(evals);
+    reuse_skipped_fraction = reuse_skipped_frames > 0 ? reuse_skipped_sum / reuse_skipped_frames : 0.0;
     misclassified_mean = mean(wrong);
     misclassified_worst = largest(wrong);
     overstepped_mean = mean(over);

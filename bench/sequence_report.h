@@ -27,7 +27,9 @@ struct SequenceRow {
     std::vector<SequenceFrame> frames;
     std::vector<std::string> counter_groups;   // of the counting frames: one lane column each
     std::map<std::string, LaneCount> lanes;    // summed over the counting frames; empty where not counted
-    double reuse_skipped_fraction = 0.0;       // of each ray, skipped through cross-frame reuse (no reuse yet)
+    double reuse_skipped_fraction = 0.0;       // of each level-0 ray, skipped through cross-frame reuse (mean)
+    double reuse_skipped_sum = 0.0;            // over the counted frames, to make the mean
+    int reuse_skipped_frames = 0;
     // Over the frames rendered (not dark): filled by summarize().
     double median_ms = 0.0, p99_ms = 0.0, worst_ms = 0.0, evaluations_per_pixel = 0.0;
     double misclassified_mean = 0.0, misclassified_worst = 0.0, overstepped_mean = 0.0, overstepped_worst = 0.0;

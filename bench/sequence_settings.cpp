@@ -22,6 +22,9 @@ std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool qui
                        SequenceBaseline::NaivePersistent});
         out.push_back({"per-eye", pixels, method(StereoMode::PerEye, false, f)});
         out.push_back({"per-eye + persistent lanes", pixels, method(StereoMode::PerEye, true, f)});
+        FrameSettings reuse = method(StereoMode::PerEye, false, f);
+        reuse.knobs["reuse"] = 1;
+        out.push_back({"per-eye + reuse", pixels, reuse});
     };
     add_methods(kAllPixels, all);
     if (!quick) {

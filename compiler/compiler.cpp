@@ -152,6 +152,9 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     m.period = analyse_periodicity(*ir).period;
     m.scene = ir->scene;
     m.precision = ir->scene.double_precision ? "double" : "float";
+    if (const auto d = ir->outputs.find("distance"); d != ir->outputs.end())
+        m.animated = (d->second.kind == IrInput::Kind::Implicit && d->second.implicit == ImplicitSource::Time) ||
+                     (d->second.kind == IrInput::Kind::Node && ir->nodes[static_cast<std::size_t>(d->second.node)].time_dependent);
     {
         std::vector<ValueType> types;
         for (const auto& p : ir->params) types.push_back(p.type == ValueType::Bool ? ValueType::Int : p.type);

@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 16> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 17> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -55,6 +55,8 @@ inline constexpr std::array<GlobalKnob, 16> kGlobalKnobs{{
      "the right eye takes the left eye's shading where both see the same point within this many cone radii; 0 is off"},
     {16, "persistent_lanes", "FG_PERSISTENT_LANES", ValueType::Bool, 0, 0, 1,
      "full-resolution marching passes hand each SIMD lane the next pixel as soon as its ray ends (same frames)"},
+    {17, "reuse", "FG_REUSE", ValueType::Bool, 0, 0, 1,
+     "per-eye conemarch starts each cone where the previous frame's levels prove it empty (a static scene)"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

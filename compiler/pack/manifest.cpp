@@ -83,6 +83,7 @@ json manifest_to_json(const PackManifest& m) {
     j["compiler"] = m.compiler;
     j["graph_hash"] = m.graph_hash;
     j["precision"] = m.precision;
+    if (m.animated) j["animated"] = true;
     j["effects"] = m.effects.names();
     j["params_size"] = m.params_size;
     j["params"] = json::array();
@@ -144,6 +145,7 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
     r.required(j, "graph_hash", "", m.graph_hash);
     // Absent in packs written before precision "double" existed: those are float.
     r.optional(j, "precision", "", m.precision, Choices{"float", "double"});
+    r.optional(j, "animated", "", m.animated);
     if (const json* effects = r.array_field(j, "effects", "", true)) {
         for (std::size_t i = 0; i < effects->size(); ++i) {
             std::string ptr = fmt::format("/effects/{}", i), name;

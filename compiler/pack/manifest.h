@@ -87,6 +87,10 @@ struct PackManifest {
     // "double": the scene runs in double around the camera and needs shaderFloat64. Packs written
     // before the field existed are "float".
     std::string precision = "float";
+    // The distance reads input.time: the scene moves by itself, so nothing one frame's march proves
+    // holds for the next. Packs from before it was recorded cannot run with this runtime (their
+    // frame block is smaller), so none is misread as static.
+    bool animated = false;
 
     const ManifestPass* find_pass(const std::string& name) const;
     const ManifestSpecConstant* find_spec(const std::string& name) const;

@@ -40,6 +40,13 @@ void add_view(FrameGraph& g, int view) {
     std::string lanes = "lanes." + name;
     g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each full-resolution dispatch" : "(persistent lanes off)"});
     std::string rays = add_rays_buffer(g, view, w, h);
+    // Cross-frame reuse reads this eye's levels of the frame before; otherwise the program's binding
+    // gets the levels it writes anyway.
+    std::string previous_levels = atlas;
+    if (g.reuse && view != kCentreView) {
+        g.keep_for_next_frame(atlas);
+        previous_levels = previous(atlas);
+    }
     auto level_pass = [&](std::uint32_t k, int stride) {
         FramePass p;
         p.label = fmt::format("conemarch.{}.L{}", name, k);
@@ -50,6 +57,7 @@ void add_view(FrameGraph& g, int view) {
         p.bind("fg_depth", depth, Access::Write);
         p.bind("FgTail", queue, Access::ReadWrite);
         p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+        p.bind("fg_previous_levels", previous_levels, Access::Read);
         p.bind("FgRays", rays, Access::Write);
         if (glow) p.bind("fg_glow", "glow." + name, Access::Write);
         p.persistent_lanes = k == 0 && g.persistent_lanes;

@@ -166,9 +166,10 @@ void FrameExecutor::make_resources() {
     params_ = std::make_unique<vk::Buffer>(ctx_, params_bytes_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                            vk::MemoryKind::HostVisible);
     for (const auto& p : manifest_.params) set_param(p.name, p.value);
-    // Per counter slot: evaluations, busy lane-iterations, all lane-iterations (march_counters.glsl).
+    // Per counter slot: evaluations, busy and all lane-iterations, rays reuse could shorten and the
+    // thousandths it skipped (march_counters.glsl).
     std::size_t slots = std::max<std::size_t>(1, graph_.counter_groups().size());
-    counters_ = std::make_unique<vk::Buffer>(ctx_, slots * 3 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+    counters_ = std::make_unique<vk::Buffer>(ctx_, slots * 5 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
     set_scene(make_gpu_scene(manifest_.scene));
 }
 
@@ -234,7 +235,11 @@ void FrameExecutor::make_descriptor_sets() {
 }
 
 void FrameExecutor::set_frame(const GpuFrame& frame) {
-    std::memcpy(frame_->data(), &frame, sizeof frame);
+    frame_data_ = frame;
+    frame_data_.previous[0] = previous_views_[0];
+    frame_data_.previous[1] = previous_views_[1];
+    frame_data_.reuse = graph_.reuse && history_valid_ ? 1u : 0u;
+    std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
 }
 
@@ -246,6 +251,8 @@ void FrameExecutor::set_scene(const GpuScene& scene) {
 bool FrameExecutor::set_param(const std::string& name, const Constant& value) {
     const auto* p = manifest_.find_param(name);
     if (!p) return false;
+    history_valid_ = false;
+    if (frame_data_.reuse) set_frame(frame_data_);
     for (int i = 0; i < component_count(p->type); ++i) {
         std::byte* at = params_bytes_.data() + p->offset + 4 * static_cast<std::size_t>(i);
         double v = value.v[static_cast<std::size_t>(i)];
@@ -337,15 +344,20 @@ FrameStats FrameExecutor::run() {
     record(shot.cmd(), timer.get());
     shot.submit_and_wait();
     ++frames_run_;
+    previous_views_[0] = frame_data_.views[FG_VIEW_LEFT];
+    previous_views_[1] = frame_data_.views[FG_VIEW_RIGHT];
+    history_valid_ = true;
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();
     const auto* counts = reinterpret_cast<const std::uint32_t*>(counters_->data());
     std::uint64_t total = 0;
     for (std::size_t i = 0; i < graph_.counter_groups().size(); ++i) {
         const std::string& group = graph_.counter_groups()[i];
-        stats.evaluations[group] = counts[3 * i];
-        total += counts[3 * i];
-        if (counts[3 * i + 2] > 0) stats.lanes[group] = {counts[3 * i + 1], counts[3 * i + 2]};
+        const std::uint32_t* slot = counts + 5 * i;
+        stats.evaluations[group] = slot[0];
+        total += slot[0];
+        if (slot[2] > 0) stats.lanes[group] = {slot[1], slot[2]};
+        if (slot[3] > 0) stats.reuse_skipped[group] = slot[4] / 1000.0 / slot[3];
     }
     stats.evaluations_per_pixel = static_cast<double>(total) / (2.0 * graph_.width * graph_.height);
     return stats;

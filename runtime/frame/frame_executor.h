@@ -37,6 +37,7 @@ struct FrameStats {
     std::map<std::string, std::uint64_t> evaluations;  // per counter group (if counting)
     double evaluations_per_pixel = 0.0;                // all groups, per output pixel of both eyes
     std::map<std::string, LaneCount> lanes;            // per counter group (if counting)
+    std::map<std::string, double> reuse_skipped;       // per counter group: the mean share of a ray reuse skipped
 };
 
 class FrameExecutor {
@@ -47,9 +48,14 @@ public:
     FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph);
     ~FrameExecutor();
 
+    // The frame's uniforms; the executor adds the previous frame's eyes and whether its levels hold
+    // for this one (cross-frame reuse).
     void set_frame(const GpuFrame& frame);
     void set_scene(const GpuScene& scene);
+    // A parameter may change the distance: the previous frame's levels no longer hold.
     bool set_param(const std::string& name, const Constant& value);
+    // The next frame starts without reusing this one's levels.
+    void forget_history() { history_valid_ = false; }
 
     FrameStats run();
     // An image as the last frame left it; "<name>.previous" is a history image's frame before.
@@ -87,6 +93,9 @@ private:
     std::vector<std::byte> params_bytes_;
     bool images_initialised_ = false;
     std::uint64_t frames_run_ = 0;
+    GpuFrame frame_data_{};
+    GpuView previous_views_[2]{};   // the eyes of the last frame run
+    bool history_valid_ = false;
 };
 
 // The specialization constants of a pack with overrides applied: the manifest's values, then

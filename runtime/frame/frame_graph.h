@@ -134,6 +134,8 @@ public:
     bool has_post = false;             // the pack has a post pass: shade writes HDR for it
     std::uint32_t tail_after = 0;      // the tail_after knob: > 0 adds compacted tail passes
     bool persistent_lanes = false;     // the persistent_lanes knob (then there is no tail pass)
+    // The reuse knob, where it can hold: per-eye perspective frames of a static float scene.
+    bool reuse = false;
     bool manifest_has_tail = false;    // the pack has the tail program
 
 private:

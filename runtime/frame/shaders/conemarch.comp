@@ -5,6 +5,7 @@
 //! include: march_counters.glsl
 //! include: lane_queue.glsl
 //! include: march_rays.glsl
+//! include: cone_walk.glsl
 // Progressive cone marching (Fulcrum's Fractus, Framestore's VR fractals), one dispatch per level
 // from coarse to fine. A level-k pixel marches a cone that covers its 2^k x 2^k footprint, starting
 // where its parent stopped, and stops as soon as the cone may touch a surface: its distance is a
@@ -35,12 +36,13 @@ float fg_escaped() { return fg_scene.far_limit * 2.0 + 1.0; }
 
 uint fg_evaluations = 0u;
 
-// Coarse level: advance while the whole cone is provably empty.
+// Coarse level: advance while the whole cone is provably empty, from where the parent level or the
+// previous frame (cone_walk.glsl) left it.
 void fg_march_cone(ivec2 pixel, ivec4 rect, vec3 ro, vec3 rd, float parent, float spread)
 {
     float cone = fg_cone_tan(pc.level);
     vec2 range = fg_bounds_interval_spread(ro, rd, cone, spread);
-    float t = max(parent, range.x);
+    float t = fg_reused_bound(pc.view, int(pc.level), ro, rd, cone, max(parent, range.x), range.y);
     bool touched = false;
     for (int i = 0; i < FG_CONE_STEPS && t <= range.y; ++i) {
         fg_count_iteration(true);
@@ -70,6 +72,8 @@ struct FgFineRay {
     float t;
     float bound;         // where the pixel's cone first touched (the centre eye: its steps keep the cone safe)
     float covered;       // an eye: how far the balls of its samples so far prove the pixel's cone empty
+    float start;         // where the march would start without cross-frame reuse (for the counts)
+    float resumed;       // where it starts with it
     float closest;
     float previous;
     float step;
@@ -98,9 +102,12 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
     float parent = fg_parent_bound(pixel, full, r.ro, r.rd);
     r.range = fg_bounds_interval(r.ro, r.rd, 0.0);
     r.cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
-    r.t = max(parent, r.range.x);
+    // The parent's cone holds this pixel's cone, and the previous frame may prove more of it.
+    r.covered = fg_reused_bound(pc.view, 0, r.ro, r.rd, r.cone, parent, r.range.y);
+    r.t = max(r.covered, r.range.x);
+    r.start = max(parent, r.range.x);
+    r.resumed = r.t;
     r.bound = fg_escaped();
-    r.covered = parent;   // the parent's cone holds this pixel's cone
     r.closest = 1e30;
     r.previous = 0.0;
     r.step = 0.0;
@@ -170,6 +177,8 @@ void fg_fine_finish(FgFineRay r)
     bool capped = !r.hit && !r.escaped && !r.deferred && r.i == FG_FINE_STEPS;
     if (r.hit || (capped && !FG_MISS_ON_STEP_CAP)) result = r.t;
     if (result != FG_MISS) bound = min(bound, result);
+    // How much of the march reuse skipped: from where it would have started to where it ended.
+    if (FG_REUSE && r.range.x <= r.range.y) fg_count_reuse(r.t > r.start ? (min(r.resumed, r.t) - r.start) / (r.t - r.start) : 0.0);
     if (FG_PERSISTENT_LANES) {
         fg_ray_result(r.pixel, fg_view_size(pc.view).x, vec4(result, bound, r.closest, 0.0));
         return;
@@ -189,7 +198,9 @@ bool fg_skip_outside_lens(ivec2 pixel, ivec4 rect, ivec2 full)
     float block = float(1 << pc.level);
     vec2 centre = (vec2(pixel) + 0.5) * block;
     if (!fg_outside_lens(pc.view, centre / vec2(full), vec2(pc.level == 0 ? 0.0 : block) / vec2(full))) return false;
-    imageStore(fg_levels, rect.xy + pixel, vec4(pc.level == 0 ? FG_MISS : fg_escaped(), fg_escaped(), 0.0, 0.0));
+    // y: children of a hidden block are hidden too and never read it; a later frame's reuse must not
+    // take a cell that was never marched as empty.
+    imageStore(fg_levels, rect.xy + pixel, vec4(pc.level == 0 ? FG_MISS : fg_escaped(), 0.0, 0.0, 0.0));
     if (pc.level == 0) {
         imageStore(fg_depth, pixel, vec4(FG_MISS));
 #ifdef FG_HAS_GLOW

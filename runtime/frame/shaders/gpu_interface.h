@@ -60,6 +60,14 @@ struct GpuFrame {
     // the scene at the anchor + p, and every view origin is then relative to it.
     vec4 anchor_hi;
     vec4 anchor_lo;
+    // Cross-frame reuse: the eyes of the frame before, whose conemarch levels the passes read as
+    // history, and whether they hold for this frame (1: the same static scene, 0: the first frame,
+    // a changed parameter or a new pack).
+    GpuView previous[2];
+    uint reuse;
+    uint unused_2;
+    uint unused_3;
+    uint unused_4;
 };
 
 // The scene's settings (set 0, binding 1): uniforms, so editing them never recompiles.
@@ -143,7 +151,8 @@ struct ProbePush {
 static_assert(sizeof(GpuView) == 96);
 static_assert(offsetof(GpuFrame, eye_size) == 288 && offsetof(GpuFrame, frame_index) == 304);
 static_assert(offsetof(GpuFrame, seconds) == 320 && offsetof(GpuFrame, pixel_cone_tan) == 336);
-static_assert(offsetof(GpuFrame, anchor_hi) == 352 && sizeof(GpuFrame) == 384);
+static_assert(offsetof(GpuFrame, anchor_hi) == 352 && offsetof(GpuFrame, previous) == 384);
+static_assert(offsetof(GpuFrame, reuse) == 576 && sizeof(GpuFrame) == 592);
 static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
 static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
 static_assert(offsetof(GpuScene, exposure) == 192 && sizeof(GpuScene) == 208);

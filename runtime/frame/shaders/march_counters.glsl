@@ -3,12 +3,23 @@
 // were. Every iteration of a marching loop adds the subgroup's size to `total` and the lanes that
 // evaluated in it to `busy` (subgroup ballots), so busy / total is the lane efficiency: the share of
 // lane-iterations that did work rather than wait for the slowest ray of their group. The counts of
-// counter slot s are words 3s (evaluations), 3s + 1 (busy) and 3s + 2 (total).
+// counter slot s are words 5s (evaluations), 5s + 1 (busy), 5s + 2 (total), and for cross-frame reuse
+// 5s + 3 (rays) and 5s + 4 (the thousandths of each ray that reuse skipped, summed).
 
 layout(set = 0, binding = 12, std430) buffer FgCounters { uint counts[]; } fg_counters;
 
 uint fg_lanes_busy = 0u;
 uint fg_lanes_total = 0u;
+uint fg_reuse_rays = 0u;
+uint fg_reuse_skipped = 0u;
+
+// Once per ray that cross-frame reuse could shorten: the share of it that reuse skipped.
+void fg_count_reuse(float skipped)
+{
+    if (!FG_COUNT_EVALUATIONS) return;
+    fg_reuse_rays++;
+    fg_reuse_skipped += uint(clamp(skipped, 0.0, 1.0) * 1000.0 + 0.5);
+}
 
 // Once per loop iteration, by every lane still in the loop.
 void fg_count_iteration(bool busy)
@@ -25,10 +36,14 @@ void fg_count_iteration(bool busy)
 void fg_count_flush(int slot, uint evaluations)
 {
     if (!FG_COUNT_EVALUATIONS) return;
-    uint base = 3u * uint(slot);
+    uint base = 5u * uint(slot);
     if (evaluations > 0u) atomicAdd(fg_counters.counts[base], evaluations);
     if (fg_lanes_total > 0u) {
         atomicAdd(fg_counters.counts[base + 1u], fg_lanes_busy);
         atomicAdd(fg_counters.counts[base + 2u], fg_lanes_total);
+    }
+    if (fg_reuse_rays > 0u) {
+        atomicAdd(fg_counters.counts[base + 3u], fg_reuse_rays);
+        atomicAdd(fg_counters.counts[base + 4u], fg_reuse_skipped);
     }
 }

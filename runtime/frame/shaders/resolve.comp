@@ -22,8 +22,7 @@ void main()
     if (pixel.x >= size.x || pixel.y >= size.y) return;
     vec4 ray;
     if (fg_outside_lens(pc.view, pixel)) {
-        float escaped = fg_scene.far_limit * 2.0 + 1.0;
-        ray = vec4(FG_MISS, escaped, 1e30, 0.0);
+        ray = vec4(FG_MISS, 0.0, 1e30, 0.0);   // as conemarch.comp: nothing proven where nothing was marched
     } else {
         bool periphery = fg_periphery(pc.view, pixel) >= 1.0;
         if (periphery && ((pixel.x | pixel.y) & 1) != 0) return;   // filled by the fovea pass
