@@ -1,6 +1,7 @@
 // fgplay: plays Fractograph shader packs. Headless to images (render), benchmarks (bench), a
-// desktop window (view) and OpenXR headsets (xr). Each command is registered by its own layer;
-// this executable sits above them all and only puts them together.
+// desktop window (view), OpenXR headsets (xr) and the node editor in the browser (studio). Each
+// command is registered by its own layer; this executable sits above them all and only puts them
+// together.
 #include <CLI/CLI.hpp>
 
 #include "bench_command.h"
@@ -10,6 +11,9 @@
 #endif
 #ifdef FG_HAVE_DESKTOP
 #include "desktop/view_command.h"
+#endif
+#ifdef FG_HAVE_STUDIO
+#include "studio/studio_command.h"
 #endif
 
 int main(int argc, char** argv) {
@@ -27,6 +31,10 @@ int main(int argc, char** argv) {
     fg::desktop::ViewCommand view;
     fg::desktop::add_view_command(app, view);
 #endif
+#ifdef FG_HAVE_STUDIO
+    fg::studio::StudioCommand studio;
+    fg::studio::add_studio_command(app, studio);
+#endif
 
     CLI11_PARSE(app, argc, argv);
     if (render.chosen()) return render.run();
@@ -36,6 +44,9 @@ int main(int argc, char** argv) {
 #endif
 #ifdef FG_HAVE_DESKTOP
     if (view.chosen()) return view.run();
+#endif
+#ifdef FG_HAVE_STUDIO
+    if (studio.chosen()) return studio.run();
 #endif
     return 2;
 }

@@ -14,9 +14,9 @@ BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config)
 LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev spirv-cross libvulkan-dev
   mesa-vulkan-drivers vulkan-tools vulkan-validationlayers libglm-dev nlohmann-json3-dev libopenxr-dev
   libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libstb-dev libcli11-dev libfmt-dev
-  libspdlog-dev libxxhash-dev libpng-dev)
+  libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev)
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib python3-jsonschema clang
-  libclang-rt-14-dev)
+  libclang-rt-14-dev chromium)
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
 
@@ -33,7 +33,18 @@ install_packages() {
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
+# The studio's page (studio/): Node.js and npm from the machine (Debian's when missing), and the
+# exact packages of package-lock.json; the build embeds the page, so nothing is fetched at run time.
+studio_packages() {
+  if ! command -v npm >/dev/null 2>&1; then install_packages nodejs npm; fi
+  if [ ! -d "$ROOT/studio/node_modules" ] || [ "$ROOT/studio/package-lock.json" -nt "$ROOT/studio/node_modules/.package-lock.json" ]; then
+    say "installing the studio page's npm packages (npm ci)"
+    (cd "$ROOT/studio" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+}
+
 build() {
+  studio_packages
   if [ ! -f "$BUILD/build.ninja" ]; then
     say "configuring $BUILD"
     cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

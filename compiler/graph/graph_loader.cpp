@@ -33,7 +33,7 @@ public:
         Graph g;
         g.source = doc;
         fields_.unknown_keys(doc, "", {"format", "version", "name", "description", "params", "nodes", "outputs", "scene",
-                                       "comment", "ui"},
+                                       "comment", "ui", "editor"},
                              "top-level field");
         fields_.optional(doc, "name", "", g.name);
         fields_.optional(doc, "description", "", g.description);

@@ -36,6 +36,18 @@ bool write_png(const std::string& path, const Rgba8Image& image) {
                           image.pixels.data(), static_cast<int>(image.width * 4)) != 0;
 }
 
+std::vector<std::uint8_t> encode_png(const Rgba8Image& image) {
+    std::vector<std::uint8_t> out;
+    auto append = [](void* context, void* data, int size) {
+        auto* bytes = static_cast<std::uint8_t*>(data);
+        static_cast<std::vector<std::uint8_t>*>(context)->insert(static_cast<std::vector<std::uint8_t>*>(context)->end(),
+                                                                 bytes, bytes + size);
+    };
+    stbi_write_png_to_func(append, &out, static_cast<int>(image.width), static_cast<int>(image.height), 4,
+                           image.pixels.data(), static_cast<int>(image.width * 4));
+    return out;
+}
+
 // stb_image_write has no 16-bit PNG; libpng writes it.
 bool write_depth_png16(const std::string& path, std::span<const float> depth, std::uint32_t width,
                        std::uint32_t height, float far) {

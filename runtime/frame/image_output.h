@@ -17,6 +17,8 @@ struct Rgba8Image {
 Rgba8Image rgba8_from_bytes(std::span<const std::byte> bytes, std::uint32_t width, std::uint32_t height);
 Rgba8Image side_by_side(const Rgba8Image& left, const Rgba8Image& right);
 bool write_png(const std::string& path, const Rgba8Image& image);
+// The same PNG in memory (a server sends it).
+std::vector<std::uint8_t> encode_png(const Rgba8Image& image);
 // Depth (distances, FG_MISS < 0) as a 16-bit grey PNG: near is bright, misses are black.
 bool write_depth_png16(const std::string& path, std::span<const float> depth, std::uint32_t width,
                        std::uint32_t height, float far);

@@ -1,0 +1,98 @@
+#include "studio/preview_renderer.h"
+
+#include <chrono>
+
+#include "frame/image_output.h"
+
+namespace fg::studio {
+
+FrameSettings preview_frame_settings(std::uint32_t eye_size) {
+    FrameSettings frame;
+    frame.width = frame.height = eye_size;
+    frame.stereo = StereoMode::PerEye;
+    frame.count_evaluations = true;
+    return frame;
+}
+
+PreviewRenderer::PreviewRenderer(const vk::Context& ctx, std::uint32_t eye_size) : ctx_(ctx), size_(eye_size) {}
+
+std::unique_ptr<PreviewScene> prepare_scene(const vk::Context& ctx, Pack pack, std::uint64_t revision,
+                                            std::uint32_t eye_size, bool with_probe) {
+    auto scene = std::make_unique<PreviewScene>();
+    scene->pack = std::make_unique<Pack>(std::move(pack));
+    StereoSettings stereo;
+    stereo.world_scale = scene->pack->manifest.scene.world_scale;
+    scene->renderer = std::make_unique<HeadlessRenderer>(ctx, *scene->pack, preview_frame_settings(eye_size), stereo);
+    if (with_probe) scene->probe = std::make_unique<CollisionProbe>(ctx, *scene->pack);
+    scene->revision = revision;
+    return scene;
+}
+
+PreviewFrame render_scene(PreviewScene& scene, const PreviewRequest& request, std::uint32_t frame_index,
+                          RenderedFrame& rendered) {
+    auto start = std::chrono::steady_clock::now();
+    HeadlessRenderer& renderer = *scene.renderer;
+    for (const auto& [name, value] : request.params) renderer.executor().set_param(name, value);
+    HeadPose head = renderer.scene_camera();
+    if (request.position && request.target && *request.position != *request.target)
+        head = look_at(*request.position, *request.target);
+    rendered = renderer.render(head, 0.0, frame_index);
+    PreviewFrame out;
+    Rgba8Image image = request.side_by_side ? side_by_side(rendered.left, rendered.right) : rendered.left;
+    out.png = encode_png(image);
+    out.width = image.width;
+    out.height = image.height;
+    if (auto it = rendered.stats.gpu_ms.find("frame"); it != rendered.stats.gpu_ms.end()) out.gpu_ms = it->second;
+    out.evaluations_per_pixel = rendered.stats.evaluations_per_pixel;
+    out.revision = scene.revision;
+    out.cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+void PreviewRenderer::show(std::unique_ptr<PreviewScene> scene) {
+    std::unique_ptr<PreviewScene> old;
+    {
+        std::lock_guard lock(mutex_);
+        old = std::move(scene_);
+        scene_ = std::move(scene);
+        last_ = {};
+    }
+    // `old` is released here, outside the lock; its frames are finished (render waits for them).
+}
+
+std::optional<PreviewFrame> PreviewRenderer::render(const PreviewRequest& request) {
+    std::lock_guard lock(mutex_);
+    if (!scene_) return std::nullopt;
+    return render_scene(*scene_, request, static_cast<std::uint32_t>(frames_++), last_);
+}
+
+std::optional<ProbeHit> PreviewRenderer::probe(std::uint32_t x, std::uint32_t y) {
+    std::lock_guard lock(mutex_);
+    if (!scene_ || last_.depth_left.empty() || x >= size_ || y >= size_) return std::nullopt;
+    const View& view = scene_->renderer->views().left;
+    ProbeHit hit;
+    hit.depth = last_.depth_left[static_cast<std::size_t>(y) * size_ + x];
+    if (hit.depth < 0.0) return hit;
+    glm::dvec3 dir = view.ray((x + 0.5) / size_, (y + 0.5) / size_);
+    hit.hit = true;
+    hit.point = view.origin + dir * hit.depth;
+    std::uint64_t ticket = scene_->probe->submit({hit.point});
+    if (ticket == 0) return std::nullopt;
+    if (auto result = scene_->probe->wait(ticket); result && !result->samples.empty())
+        hit.distance = result->samples.front().distance;
+    return hit;
+}
+
+std::uint64_t PreviewRenderer::frames() const {
+    std::lock_guard lock(mutex_);
+    return frames_;
+}
+
+std::optional<std::pair<glm::dvec3, glm::dvec3>> PreviewRenderer::scene_camera() const {
+    std::lock_guard lock(mutex_);
+    if (!scene_) return std::nullopt;
+    const auto& camera = scene_->pack->manifest.scene.camera;
+    return std::make_pair(camera.position, camera.target);
+}
+
+}  // namespace fg::studio

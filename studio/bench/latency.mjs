@@ -1,0 +1,90 @@
+// How long the studio takes to answer what a person does, over its HTTP API (what the page does):
+//   slider move -> new preview frame (a uniform changes, nothing recompiles)
+//   graph edit  -> compile + pipelines + first frame (warm: the server is already running)
+// A benchmark, not a test: prints a Markdown table for docs/studio.md.
+//   node studio/bench/latency.mjs FGPLAY GRAPH [--size 256] [--moves 60] [--edits 20]
+import { spawn } from "node:child_process";
+
+const [fgplay, graphPath, ...rest] = process.argv.slice(2);
+if (!fgplay || !graphPath) {
+  console.error("usage: node latency.mjs FGPLAY GRAPH [--size N] [--moves N] [--edits N]");
+  process.exit(2);
+}
+const option = (name, fallback) => {
+  const i = rest.indexOf(name);
+  return i >= 0 ? Number(rest[i + 1]) : fallback;
+};
+const size = option("--size", 256), moves = option("--moves", 60), edits = option("--edits", 20);
+
+const server = spawn(fgplay, ["studio", graphPath, "--port", "0", "--size", String(size)], { stdio: ["ignore", "pipe", "inherit"] });
+const base = await new Promise((resolve, reject) => {
+  let out = "";
+  server.stdout.on("data", (d) => {
+    out += d;
+    const m = out.match(/http:\/\/127\.0\.0\.1:\d+/);
+    if (m) resolve(m[0]);
+  });
+  server.on("exit", (code) => reject(new Error(`fgplay studio exited with ${code}`)));
+});
+
+const post = (path, body) => fetch(base + path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
+const now = () => performance.now();
+async function frame(params) {
+  const r = await post("/api/frame", { params });
+  if (!r.ok) throw new Error(await r.text());
+  await r.arrayBuffer();
+  return { gpu: Number(r.headers.get("X-Fg-Gpu-Ms")), cpu: Number(r.headers.get("X-Fg-Cpu-Ms")), compiles: Number(r.headers.get("X-Fg-Compiles")) };
+}
+async function compile(graph) {
+  const { revision } = await (await post("/api/edit", { graph })).json();
+  for (;;) {
+    const state = await (await fetch(`${base}/api/state?after=${revision}&wait_ms=10000`)).json();
+    if (state.revision >= revision) {
+      if (!state.ok) throw new Error(JSON.stringify(state.diagnostics));
+      return state;
+    }
+  }
+}
+const stats = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  const at = (q) => s[Math.min(s.length - 1, Math.floor(q * s.length))];
+  return { median: at(0.5), p95: at(0.95), n: s.length };
+};
+
+const graph = (await (await fetch(`${base}/api/graph?path=${encodeURIComponent(graphPath.split("/").pop())}`)).json()).graph;
+await compile(graph);
+await frame({});
+
+const slider = [], sliderGpu = [], sliderServer = [];
+const compilesBefore = (await frame({})).compiles;
+for (let i = 0; i < moves; ++i) {
+  const t = now();
+  const f = await frame({ power: 8 + 3 * Math.sin(i) });
+  slider.push(now() - t);
+  sliderGpu.push(f.gpu);
+  sliderServer.push(f.cpu);
+}
+const compilesAfter = (await frame({})).compiles;
+
+const edit = [], compileMs = [], pipelinesMs = [];
+for (let i = 0; i < edits; ++i) {
+  const g = JSON.parse(JSON.stringify(graph));
+  const tone = g.nodes.find((n) => n.type === "math.scale");
+  if (tone) tone.inputs.s = 0.5 + 0.01 * (i + 1);   // a literal: baked into the code, so it recompiles
+  const t = now();
+  const state = await compile(g);
+  await frame({});
+  edit.push(now() - t);
+  compileMs.push(state.compile_ms);
+  pipelinesMs.push(state.pipelines_ms);
+}
+server.kill("SIGTERM");
+
+const row = (what, s, extra) => `| ${what} | ${s.median.toFixed(0)} ms | ${s.p95.toFixed(0)} ms | ${s.n} | ${extra} |`;
+const g = stats(sliderGpu), sv = stats(sliderServer), c = stats(compileMs), p = stats(pipelinesMs);
+console.log(`| step | median | p95 | runs | of which |`);
+console.log(`|---|---|---|---|---|`);
+console.log(row(`slider move -> new frame (${size}² per eye)`, stats(slider),
+  `render + read back + PNG on the server ${sv.median.toFixed(0)} ms median${g.median >= 0 ? `, GPU ${g.median.toFixed(0)} ms` : ""}; compiles during the moves: ${compilesAfter - compilesBefore}`));
+console.log(row("graph edit -> compile + first frame (warm)", stats(edit),
+  `compile ${c.median.toFixed(0)} ms, pipelines ${p.median.toFixed(0)} ms (medians)`));

@@ -1,0 +1,230 @@
+// Fractograph Studio driven as a person would, in headless Chromium (Debian's, through
+// puppeteer-core): open the gallery Mandelbulb, move a slider, add and wire a node, make a type
+// error, save, reopen an untouched graph and save it byte-identical. Run by ctest with FGPLAY,
+// FGC, CHROMIUM, FG_SOURCE_DIR and STUDIO_WORK set; FG_STUDIO_SCREENSHOTS (optional) is where the
+// screenshots docs/studio.md shows are written.
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { spawn, execFileSync } from "node:child_process";
+import fs from "node:fs";
+import path from "node:path";
+import puppeteer from "puppeteer-core";
+
+const env = (name) => {
+  const v = process.env[name];
+  if (!v) throw new Error(`${name} is not set (ctest sets it)`);
+  return v;
+};
+const work = env("STUDIO_WORK");
+const folder = path.join(work, "folder");
+const shots = process.env.FG_STUDIO_SCREENSHOTS || path.join(work, "screenshots");
+let server, browser, page, base;
+
+before(async () => {
+  fs.rmSync(work, { recursive: true, force: true });
+  fs.mkdirSync(folder, { recursive: true });
+  fs.mkdirSync(shots, { recursive: true });
+  for (const name of ["mandelbulb.json", "menger.json", "mandelbox.json"])
+    fs.copyFileSync(path.join(env("FG_SOURCE_DIR"), "graphs/gallery", name), path.join(folder, name));
+  server = spawn(env("FGPLAY"), ["studio", path.join(folder, "mandelbulb.json"), "--port", "0", "--fgc", env("FGC")], {
+    stdio: ["ignore", "pipe", "inherit"],
+  });
+  base = await new Promise((resolve, reject) => {
+    let out = "";
+    server.stdout.on("data", (d) => {
+      out += d;
+      const m = out.match(/http:\/\/127\.0\.0\.1:\d+\/\S*/);
+      if (m) resolve(m[0]);
+    });
+    server.on("exit", (code) => reject(new Error(`fgplay studio exited with ${code}: ${out}`)));
+    setTimeout(() => reject(new Error(`no URL from fgplay studio: ${out}`)), 60000);
+  });
+  browser = await puppeteer.launch({
+    executablePath: env("CHROMIUM"),
+    headless: true,
+    args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"],
+  });
+  page = await browser.newPage();
+  await page.setViewport({ width: 1600, height: 900 });
+  page.on("pageerror", (e) => console.error("page error:", e.message));
+});
+
+after(async () => {
+  await browser?.close();
+  server?.kill("SIGTERM");
+});
+
+const origin = () => new URL(base).origin;
+async function serverState() {
+  const r = await fetch(`${origin()}/api/state`);
+  return r.json();
+}
+
+// A digest of the preview's pixels and how much they vary (a blank frame does not).
+async function previewPixels() {
+  return page.evaluate(async () => {
+    const img = document.querySelector('[data-testid="preview-image"]');
+    if (!img || !img.complete || !img.naturalWidth) return null;
+    const c = document.createElement("canvas");
+    c.width = img.naturalWidth;
+    c.height = img.naturalHeight;
+    const g = c.getContext("2d");
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let sum = 0, sum2 = 0, hash = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const y = d[i] + d[i + 1] + d[i + 2];
+      sum += y;
+      sum2 += y * y;
+      hash = (hash * 31 + y) | 0;
+    }
+    const n = d.length / 4;
+    return { hash, variance: sum2 / n - (sum / n) ** 2, src: img.src, width: c.width };
+  });
+}
+
+async function waitForPreview(differentFrom, timeout = 120000) {
+  const start = Date.now();
+  while (Date.now() - start < timeout) {
+    const p = await previewPixels();
+    if (p && p.variance > 10 && (!differentFrom || p.hash !== differentFrom.hash)) return p;
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  throw new Error("the preview did not show the expected frame");
+}
+
+async function idle() {
+  // Compiles done and the newest frame shown.
+  await page.waitForFunction(() => !document.querySelector('[data-testid="status"]')?.textContent?.includes("compiling"), { timeout: 120000 });
+  await new Promise((r) => setTimeout(r, 800));
+}
+
+// Where an element settles: a node grows when its preview image or diagnostics arrive, which moves
+// its handles, so a drag starts only once both ends have held still for a moment.
+async function settledBox(selector) {
+  const element = await page.waitForSelector(selector);
+  let last = await element.boundingBox();
+  for (let i = 0; i < 50; ++i) {
+    await new Promise((r) => setTimeout(r, 150));
+    const box = await element.boundingBox();
+    if (box && last && box.x === last.x && box.y === last.y) return box;
+    last = box;
+  }
+  throw new Error(`${selector} kept moving`);
+}
+
+async function drag(from, to) {
+  const a = await settledBox(from);
+  const b = await settledBox(to);
+  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
+  await page.mouse.down();
+  await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2, { steps: 8 });
+  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
+  await page.mouse.up();
+}
+
+const handle = (node, side, port) => `[data-testid="node-${node}"] .react-flow__handle.${side}[data-handleid="${port}"]`;
+
+async function setLiteral(node, port, text) {
+  const field = await page.waitForSelector(`[data-testid="literal-${node}-${port}"]`);
+  await field.click({ clickCount: 3 });
+  await field.type(text);
+  await field.press("Enter");
+}
+
+async function saveAs(name) {
+  const accept = (d) => d.accept(name);
+  page.once("dialog", accept);
+  await page.click('[data-testid="save-as"]');
+  await page.waitForFunction((n) => document.querySelector('[data-testid="toast"]')?.textContent?.includes(`saved ${n}`), { timeout: 30000 }, name);
+}
+
+test("the studio edits a graph with a live preview", async (t) => {
+  await page.goto(base);
+  let frame;
+  await t.test("it opens the gallery Mandelbulb and shows a non-blank preview", async () => {
+    await page.waitForSelector('[data-testid="node-bulb"]', { timeout: 60000 });
+    frame = await waitForPreview();
+    await idle();
+    await page.screenshot({ path: path.join(shots, "overview.png") });
+  });
+
+  await t.test("the power slider changes the preview without a recompile", async () => {
+    const compiles = (await serverState()).compiles;
+    const slider = await page.$('[data-testid="param-power"]');
+    const box = await slider.boundingBox();
+    await page.mouse.click(box.x + box.width * 0.2, box.y + box.height / 2);
+    frame = await waitForPreview(frame);
+    assert.equal((await serverState()).compiles, compiles, "a slider move must not recompile");
+  });
+
+  await t.test("clicking the preview probes the surface", async () => {
+    const img = await (await page.$('[data-testid="preview-image"]')).boundingBox();
+    await page.mouse.click(img.x + img.width / 2, img.y + img.height / 2);
+    const text = await page.waitForSelector('[data-testid="probe"]').then((e) => e.evaluate((x) => x.textContent));
+    assert.match(text, /hit at|no surface/);
+  });
+
+  await t.test("a new node wired in changes the picture", async () => {
+    await page.type('[data-testid="palette-search"]', "round");
+    await page.click('[data-testid="palette-op.round"]');
+    await page.waitForSelector('[data-testid="node-round"]');
+    await new Promise((r) => setTimeout(r, 500));
+    await drag(handle("bulb", "source", "distance"), handle("round", "target", "d"));
+    await page.waitForSelector(`.react-flow__edge[data-testid="rf__edge-bulb.distance->round.d"]`, { timeout: 10000 });
+    await drag(handle("round", "source", "distance"), handle("__outputs__", "target", "distance"));
+    await page.waitForSelector(`.react-flow__edge[data-testid="rf__edge-round.distance->__outputs__.distance"]`, { timeout: 10000 });
+    await setLiteral("round", "radius", "0.08");
+    frame = await waitForPreview(frame);
+    await idle();
+    await page.screenshot({ path: path.join(shots, "node_added.png") });
+  });
+
+  await t.test("a wire between incompatible types is refused with the compiler's reason", async () => {
+    await drag(handle("bulb", "source", "trap"), handle("round", "target", "radius"));
+    const toast = await page.waitForSelector('[data-testid="toast"]').then((e) => e.evaluate((x) => x.textContent));
+    assert.match(toast, /wire refused: .*type mismatch/);
+  });
+
+  await t.test("a type error shows its message on that node, and the preview keeps the last good pack", async () => {
+    await setLiteral("round", "radius", "[1, 2, 3]");
+    const diag = await page.waitForSelector('[data-testid="diag-round"]', { timeout: 60000 });
+    const text = await diag.evaluate((x) => x.textContent);
+    assert.match(text, /radius/);
+    assert.equal(await page.$eval('[data-testid="node-round"]', (n) => n.classList.contains("has-error")), true);
+    await page.waitForSelector('[data-testid="port-round-radius"].port-error');
+    await page.screenshot({ path: path.join(shots, "type_error.png") });
+    assert.equal((await previewPixels()).hash, frame.hash);
+    await setLiteral("round", "radius", "0.08");
+    await page.waitForFunction(() => !document.querySelector('[data-testid="diag-round"]'), { timeout: 60000 });
+  });
+
+  await t.test("saving writes a graph that fgc check accepts", async () => {
+    await saveAs("saved/edited.json");
+    const saved = path.join(folder, "saved/edited.json");
+    const graph = JSON.parse(fs.readFileSync(saved, "utf8"));
+    assert.equal(graph.editor.version, 1);
+    assert.ok(graph.editor.nodes.round);
+    assert.equal(graph.outputs.distance, "round.distance");
+    execFileSync(env("FGC"), ["check", saved], { stdio: "inherit" });
+  });
+
+  await t.test("side-by-side stereo shows both eyes", async () => {
+    await page.click('[data-testid="stereo"]');
+    await page.waitForFunction(() => {
+      const img = document.querySelector('[data-testid="preview-image"]');
+      return img && img.naturalWidth === 2 * img.naturalHeight;
+    }, { timeout: 60000 });
+    await idle();
+    await page.screenshot({ path: path.join(shots, "stereo.png") });
+    await page.click('[data-testid="mono"]');
+  });
+
+  await t.test("an untouched gallery graph reopens and saves byte-identical", async () => {
+    await page.select('[data-testid="graph-select"]', "menger.json");
+    await page.waitForFunction(() => new URLSearchParams(location.search).get("graph") === "menger.json");
+    await idle();
+    await saveAs("copy/menger.json");
+    assert.ok(fs.readFileSync(path.join(folder, "copy/menger.json")).equals(fs.readFileSync(path.join(folder, "menger.json"))));
+  });
+});
