@@ -27,6 +27,27 @@ glm::dvec3 catmull_rom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dv
     return 0.5 * ((2.0 * p1) + (-p0 + p2) * s + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * s2 + (-p0 + 3.0 * p1 - 3.0 * p2 + p3) * s3);
 }
 
+double catmull_rom(double p0, double p1, double p2, double p3, double s) {
+    return catmull_rom(glm::dvec3(p0), glm::dvec3(p1), glm::dvec3(p2), glm::dvec3(p3), s).x;
+}
+
+// `"power": 6.5` or `"tint": [1, 0.5, 0.2]`.
+void read_param_keys(JsonFieldReader& r, const nlohmann::json& k, const std::string& ptr, CameraKey& key) {
+    if (!k.contains("params")) return;
+    const std::string at = ptr + "/params";
+    if (!r.is_object(k["params"], at)) return;
+    for (const auto& [name, value] : k["params"].items()) {
+        const std::string field = at + "/" + name;
+        std::vector<double> v(value.is_array() ? value.size() : 1);
+        if (value.is_array() && (v.empty() || v.size() > 4)) {
+            r.error("expected a number or 1 to 4 numbers", field);
+            continue;
+        }
+        bool ok = value.is_array() ? r.read_numbers(value, field, v) : r.read(value, field, v[0]);
+        if (ok) key.params[name] = v;
+    }
+}
+
 }  // namespace
 
 std::optional<CameraPath> CameraPath::parse(const nlohmann::json& j, double default_world_scale, Diagnostics& diag) {
@@ -48,7 +69,8 @@ std::optional<CameraPath> CameraPath::parse(const nlohmann::json& j, double defa
         const auto& k = (*keys)[i];
         std::string ptr = fmt::format("/keyframes/{}", i);
         if (!r.is_object(k, ptr)) continue;
-        r.unknown_keys(k, ptr, {"time", "position", "target", "up", "orientation", "world_scale", "ease"}, "keyframe field");
+        r.unknown_keys(k, ptr, {"time", "position", "target", "up", "orientation", "world_scale", "ease", "params"},
+                       "keyframe field");
         CameraKey key;
         key.world_scale = default_world_scale;
         r.required(k, "time", ptr, key.time);
@@ -76,6 +98,7 @@ std::optional<CameraPath> CameraPath::parse(const nlohmann::json& j, double defa
         if (r.optional(k, "ease", ptr, ease, Choices{"linear", "in", "out", "in-out"}))
             key.ease = ease == "in" ? Ease::In : ease == "out" ? Ease::Out : ease == "in-out" ? Ease::InOut : Ease::Linear;
         if (key.target) key.orientation = look_at(key.position, *key.target, key.up).orientation;
+        read_param_keys(r, k, ptr, key);
         path.keys_.push_back(key);
     }
     if (r.errors() > 0) return std::nullopt;
@@ -103,9 +126,36 @@ int CameraPath::frame_count() const {
 
 CameraSample CameraPath::sample(int frame) const { return at(keys_.front().time + frame / fps_); }
 
+// A parameter's value at `time`: its own track through the keys that name it, with the same
+// interpolation as the positions and the easing of the key each segment starts at.
+std::vector<double> CameraPath::param_at(const std::string& name, double time) const {
+    std::vector<const CameraKey*> track;
+    for (const auto& k : keys_)
+        if (k.params.count(name)) track.push_back(&k);
+    auto value = [&](std::size_t i) -> const std::vector<double>& { return track[i]->params.at(name); };
+    if (track.size() == 1 || time <= track.front()->time) return value(0);
+    if (time >= track.back()->time) return value(track.size() - 1);
+    std::size_t i = 0;
+    while (time >= track[i + 1]->time) ++i;
+    double s = eased(track[i]->ease, (time - track[i]->time) / (track[i + 1]->time - track[i]->time));
+    const auto &a = value(i), &b = value(i + 1);
+    const auto &before = i > 0 ? value(i - 1) : a, &after = i + 2 < track.size() ? value(i + 2) : b;
+    std::vector<double> out(a.size());
+    for (std::size_t c = 0; c < out.size(); ++c) {
+        // Keys of another size are refused by check_path_params; here they only must not crash.
+        double p1 = a[c], p2 = c < b.size() ? b[c] : a[c];
+        double p0 = c < before.size() ? before[c] : p1, p3 = c < after.size() ? after[c] : p2;
+        out[c] = smooth_ ? catmull_rom(p0, p1, p2, p3, s) : glm::mix(p1, p2, s);
+    }
+    return out;
+}
+
 CameraSample CameraPath::at(double time) const {
     CameraSample out;
     out.time = time;
+    for (const auto& k : keys_)
+        for (const auto& [name, _] : k.params)
+            if (!out.params.count(name)) out.params[name] = param_at(name, time);
     if (keys_.size() == 1 || time <= keys_.front().time) {
         const auto& k = time <= keys_.front().time ? keys_.front() : keys_.back();
         out.head = {k.position, k.orientation};

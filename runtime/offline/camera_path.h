@@ -1,8 +1,10 @@
 #pragma once
 // A camera path for offline renders (docs/camera-path.md): keyframes with a time, a position, an
-// orientation (a target to look at, or a quaternion) and a world scale, eased between keys.
+// orientation (a target to look at, or a quaternion), a world scale and graph parameters, eased
+// between keys.
 // Sampling is a pure function of the frame number, so any frame rendered alone is the same frame
 // as in a full run.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,12 +26,16 @@ struct CameraKey {
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0}; // ... or turn this way (-z forward, +y up)
     double world_scale = 1.0;                   // scene units per metre: the IPD scales with it
     Ease ease = Ease::Linear;                   // timing of the segment to the next key
+    // Graph parameters keyed here, by name: 1 to 4 components (checked against a pack by
+    // check_path_params). A parameter moves between the keys that name it.
+    std::map<std::string, std::vector<double>> params;
 };
 
 struct CameraSample {
     HeadPose head;
     double world_scale = 1.0;
     double time = 0.0;                          // scene time in seconds
+    std::map<std::string, std::vector<double>> params;   // every parameter some key names
 };
 
 class CameraPath {
@@ -46,6 +52,8 @@ public:
     const std::vector<CameraKey>& keys() const { return keys_; }
 
 private:
+    std::vector<double> param_at(const std::string& name, double time) const;
+
     std::vector<CameraKey> keys_;
     double fps_ = 30.0;
     bool smooth_ = true;   // Catmull-Rom through the positions (and targets), else straight lines

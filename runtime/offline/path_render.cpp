@@ -9,6 +9,7 @@
 #include <stb/stb_image_write.h>
 
 #include "frame_record.h"
+#include "path_params.h"
 #include "progress_bar.h"
 #include "supersample.h"
 
@@ -63,11 +64,18 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
     StereoSettings stereo;
     stereo.ipd_m = settings_.ipd_m;
     renderer_ = std::make_unique<HeadlessRenderer>(ctx, pack, frame_settings(settings_), stereo);
+    Diagnostics diag;
+    if (!check_path_params(path_, pack.manifest, diag)) throw std::runtime_error(diag.format("camera path"));
+    params_ = pack.manifest.params;
 }
 
 Rgba8Image PathRenderer::render(int frame) {
     CameraSample s = path_.sample(frame);
     renderer_->set_world_scale(s.world_scale);
+    // Keyed parameters are uniforms: set before every frame, so each frame depends on its number only.
+    for (const auto& [name, value] : s.params)
+        for (const auto& p : params_)
+            if (p.name == name) renderer_->executor().set_param(name, keyed_param_value(p, value));
     RenderedFrame r = renderer_->render(s.head, s.time, static_cast<std::uint32_t>(frame));
     std::uint64_t evaluations = 0;
     for (const auto& [_, n] : r.stats.evaluations) evaluations += n;

@@ -5,6 +5,7 @@
 #include "command_outcome.h"
 #include "fgplay_render.h"
 #include "offline/frame_record.h"
+#include "offline/path_params.h"
 #include "offline/path_render.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
@@ -26,7 +27,7 @@ int render_path(const RenderOptions& o) {
     if (!pack) return 1;
     Diagnostics diag;
     auto path = CameraPath::load(o.path, pack->manifest.scene.world_scale, diag);
-    if (!path) {
+    if (!path || !check_path_params(*path, pack->manifest, diag)) {
         fmt::print(stderr, "{}", diag.format(o.path));
         return 1;
     }
