@@ -1,7 +1,10 @@
 #include "projection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "frame/shaders/gpu_interface.h"
 
 namespace fg {
 
@@ -28,7 +31,12 @@ Ray projection_ray(Projection p, const View& view, double side, double ipd, doub
     double lon = (u - 0.5) * 2.0 * std::numbers::pi, lat = (0.5 - v) * std::numbers::pi;
     glm::dvec3 dir = std::cos(lat) * (std::sin(lon) * view.right + std::cos(lon) * view.forward) + std::sin(lat) * view.up;
     glm::dvec3 origin = view.origin;
-    if (p == Projection::Ods) origin += side * 0.5 * ipd * (std::cos(lon) * view.right - std::sin(lon) * view.forward);
+    if (p == Projection::Ods) {
+        // Closer together towards the poles, as the shaders' fg_ods_separation.
+        double x = std::clamp((std::abs(lat) - FG_ODS_FADE_START) / FG_ODS_FADE_WIDTH, 0.0, 1.0);
+        double separation = 1.0 - x * x * (3.0 - 2.0 * x);
+        origin += side * 0.5 * ipd * separation * (std::cos(lon) * view.right - std::sin(lon) * view.forward);
+    }
     return {origin, dir};
 }
 

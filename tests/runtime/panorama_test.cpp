@@ -241,3 +241,34 @@ TEST_F(RuntimeTest, a_panorama_runs_only_the_passes_its_rays_allow) {
               (std::set<std::string>{"conemarch.centre.L1", "conemarch.centre.L0", "shade.centre"}));
     EXPECT_EQ(programs(Projection::Equirect, StereoMode::Naive), (std::set<std::string>{"naive.centre", "shade.centre"}));
 }
+
+// ODS fades the eyes' separation out towards the poles (FG_ODS_FADE_START): the full IPD up to 60
+// degrees of latitude, none at the zenith and nadir, where the eyes' circle would make the view swirl.
+TEST(OdsPoles, the_eyes_keep_the_full_ipd_up_to_sixty_degrees_and_meet_at_the_poles) {
+    View view;
+    view.origin = glm::dvec3(0.0);
+    view.right = {1, 0, 0};
+    view.up = {0, 1, 0};
+    view.forward = {0, 0, -1};
+    auto separation = [&](double latitude_deg) {
+        double v = 0.5 - latitude_deg / 180.0;
+        Ray left = projection_ray(Projection::Ods, view, -1.0, 0.064, 0.3, v);
+        Ray right = projection_ray(Projection::Ods, view, 1.0, 0.064, 0.3, v);
+        EXPECT_LT(glm::length(left.dir - right.dir), 1e-12) << "both eyes look the same way";
+        return glm::length(left.origin - right.origin);
+    };
+    EXPECT_NEAR(separation(0.0), 0.064, 1e-12);
+    EXPECT_NEAR(separation(59.9), 0.064, 1e-12);
+    EXPECT_NEAR(separation(-59.9), 0.064, 1e-12);
+    EXPECT_NEAR(separation(75.0), 0.032, 1e-7);   // half-way: the constants are floats
+    EXPECT_LT(separation(89.0), 0.064 * 0.005);
+    EXPECT_LT(separation(-89.0), 0.064 * 0.005);
+    EXPECT_LT(separation(90.0), 1e-12);
+    // Monotone in between: no ripple a viewer would see as the horizon of the fade.
+    double last = 1.0;
+    for (double lat = 60.0; lat <= 90.0; lat += 0.5) {
+        double s = separation(lat);
+        EXPECT_LE(s, last + 1e-15);
+        last = s;
+    }
+}

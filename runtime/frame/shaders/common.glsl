@@ -47,16 +47,22 @@ vec3 fg_ray_dir(int view, vec2 uv)
     return normalize(v.forward.xyz + tx * v.right.xyz + ty * v.up.xyz);
 }
 
+// The share of the IPD an ODS eye keeps at latitude `lat` (gpu_interface.h).
+float fg_ods_separation(float lat)
+{
+    return 1.0 - smoothstep(0.0, 1.0, (abs(lat) - FG_ODS_FADE_START) / FG_ODS_FADE_WIDTH);
+}
+
 // Ray origin of a pixel: the view's eye, except in ODS, where the left (view 0) and right eye
 // (view 1) of each column sit half the IPD to either side of the head, across that column's
-// direction (the views' origins are the head's centre then).
+// direction (the views' origins are the head's centre then), closer together towards the poles.
 vec3 fg_ray_origin(int view, vec2 uv)
 {
     GpuView v = fg_frame.views[view];
     if (fg_frame.projection == FG_PROJECTION_ODS && view != FG_VIEW_CENTRE) {
-        float lon = fg_panorama_angles(uv).x;
-        float side = view == FG_VIEW_LEFT ? -0.5 : 0.5;
-        return v.origin.xyz + side * fg_frame.ipd * (cos(lon) * v.right.xyz - sin(lon) * v.forward.xyz);
+        vec2 a = fg_panorama_angles(uv);
+        float side = (view == FG_VIEW_LEFT ? -0.5 : 0.5) * fg_ods_separation(a.y);
+        return v.origin.xyz + side * fg_frame.ipd * (cos(a.x) * v.right.xyz - sin(a.x) * v.forward.xyz);
     }
     return v.origin.xyz;
 }
@@ -103,13 +109,18 @@ ivec2 fg_view_size(int view)
     return ivec2(view == FG_VIEW_CENTRE ? fg_frame.centre_size : fg_frame.eye_size);
 }
 
-// How far the eyes of a conemarch block 2^level columns wide sit from the eye of its centre
-// column: 0 but in ODS, where the eye moves along the IPD circle by at most the arc of half the
-// block's longitude. A cone whose radius grows by this much covers the rays of every eye.
+// How far the eyes of a conemarch block 2^level pixels wide sit from the eye of its centre pixel:
+// 0 but in ODS, where the eye moves along the IPD circle by at most the arc of half the block's
+// longitude, and towards the centre by as much as the pole fade changes over half its latitude
+// (a smoothstep's slope is at most 1.5 per fade width). A cone whose radius grows by this much
+// covers the rays of every eye.
 float fg_origin_spread(int view, int level)
 {
     if (fg_frame.projection != FG_PROJECTION_ODS || view == FG_VIEW_CENTRE) return 0.0;
-    return 0.5 * fg_frame.ipd * 3.14159265 * float(1 << level) / float(fg_view_size(view).x);
+    vec2 size = vec2(fg_view_size(view));
+    float along = 3.14159265 * float(1 << level) / size.x;
+    float across = 1.5 / FG_ODS_FADE_WIDTH * 0.5 * 3.14159265 * float(1 << level) / size.y;
+    return 0.5 * fg_frame.ipd * (along + across);
 }
 
 // Conemarch levels live in one atlas image per view: level 0 at the origin, level k >= 1 stacked in

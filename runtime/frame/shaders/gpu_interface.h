@@ -28,6 +28,12 @@ const uint FG_PROJECTION_PERSPECTIVE = 0u;
 const uint FG_PROJECTION_EQUIRECT = 1u;
 const uint FG_PROJECTION_ODS = 2u;
 
+// ODS fades the eyes' separation to none towards the poles (from 60 degrees of latitude to 90, a
+// smoothstep): near the zenith and nadir every column's eye looks at the same point from another
+// place on the IPD circle, which swirls in a headset (Google's ODS guidance does the same).
+const float FG_ODS_FADE_START = 1.04719755f;   // radians of latitude
+const float FG_ODS_FADE_WIDTH = 0.52359878f;
+
 // One view: an eye or the centre eye.
 struct GpuView {
     vec4 origin;     // xyz eye position in scene units (relative to the anchor in double packs)
