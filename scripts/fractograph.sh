@@ -16,7 +16,7 @@ LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev 
   libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libstb-dev libcli11-dev libfmt-dev
   libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev)
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib python3-jsonschema clang
-  libclang-rt-14-dev chromium)
+  libclang-rt-14-dev chromium slurm-wlm munge)
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
 
