@@ -9,6 +9,7 @@
 
 #include "analysis/effect_set.h"
 #include "analysis/periodicity.h"
+#include "analysis/precision_advice.h"
 #include "analysis/specialization.h"
 #include "codegen/scene_codegen.h"
 #include "graph/graph_loader.h"
@@ -127,6 +128,7 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     if (options.double_precision) ir->scene.double_precision = *options.double_precision;
     if (ir->scene.double_precision) check_double_lowering(*ir, diag);
     if (diag.has_errors()) return std::nullopt;
+    advise_precision(*ir, diag);
 
     // Analyses.
     EffectSet effects = find_effects(*ir);
