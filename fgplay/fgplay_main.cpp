@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_command.h"
+#include "command_line.h"
 #include "tool/render_command.h"
 #ifdef FG_HAVE_XR
 #include "xr/xr_command.h"
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
     fg::studio::add_studio_command(app, studio);
 #endif
 
-    CLI11_PARSE(app, argc, argv);
+    if (auto failed = fg::cli::parse(app, argc, argv)) return *failed;
     if (render.chosen()) return render.run();
     if (bench.chosen()) return bench.run();
 #ifdef FG_HAVE_XR

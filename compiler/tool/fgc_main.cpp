@@ -1,6 +1,7 @@
 // fgc: the Fractograph graph compiler. Graph JSON in, shader pack out.
 #include <CLI/CLI.hpp>
 
+#include "command_line.h"
 #include "compiler.h"
 #include "fgc_commands.h"
 
@@ -54,7 +55,7 @@ int main(int argc, char** argv) {
                           "how far the bias may move the visible surface, in hit thresholds (90th percentile near the surface; "
                           "default 2; 0: no limit)")->check(CLI::Range(0.0, 1e12));
 
-    CLI11_PARSE(app, argc, argv);
+    if (auto failed = fg::cli::parse(app, argc, argv)) return *failed;
     if (*calibrate) return fg::fgc::calibrate(common, graph, calib);
     if (*check) return fg::fgc::check(common, graph);
     if (*compile) return fg::fgc::compile(common, graph, output, glsl_dir, include_glsl, verbose, precision);
