@@ -150,22 +150,22 @@ void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, co
         RenderedFrame frame = r.timed->render(tf.head, tf.time, index);
         f.gpu_ms = frame.stats.gpu_ms.count("frame") ? frame.stats.gpu_ms.at("frame") : 0.0;
         compare(frame, ref, pixel_half_diagonal, r, f);
-        // A setting that reuses the frame before counts every frame, so its history is the timed one's.
-        const bool reuses = r.counting->executor().graph().reuse;
-        if (reuses && i % static_cast<std::size_t>(count_every) != 0) {
-            set_brightness(*r.counting, scene, tf.brightness);
-            r.counting->render(tf.head, tf.time, index);
-        } else if (i % static_cast<std::size_t>(count_every) == 0) {
+        // A setting that reuses the frame before renders every frame on the counting renderer too,
+        // so that its history is the timed one's; the figures are taken every count_every frames.
+        const bool counts_now = i % static_cast<std::size_t>(count_every) == 0;
+        if (counts_now || r.counting->executor().graph().reuse) {
             set_brightness(*r.counting, scene, tf.brightness);
             FrameStats counted = r.counting->render(tf.head, tf.time, index).stats;
-            if (auto it = counted.reuse_skipped.find("march.L0"); it != counted.reuse_skipped.end())
-                row.reuse_skipped_sum += it->second, ++row.reuse_skipped_frames;
-            f.evaluations_per_pixel = counted.evaluations_per_pixel;
-            if (row.counter_groups.empty())
-                for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
-            for (const auto& [group, lanes] : counted.lanes) {
-                row.lanes[group].busy += lanes.busy;
-                row.lanes[group].total += lanes.total;
+            if (counts_now) {
+                if (auto it = counted.reuse_skipped.find("march.L0"); it != counted.reuse_skipped.end())
+                    row.reuse_skipped_sum += it->second, ++row.reuse_skipped_frames;
+                f.evaluations_per_pixel = counted.evaluations_per_pixel;
+                if (row.counter_groups.empty())
+                    for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
+                for (const auto& [group, lanes] : counted.lanes) {
+                    row.lanes[group].busy += lanes.busy;
+                    row.lanes[group].total += lanes.total;
+                }
             }
         }
     }

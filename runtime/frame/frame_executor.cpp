@@ -166,10 +166,8 @@ void FrameExecutor::make_resources() {
     params_ = std::make_unique<vk::Buffer>(ctx_, params_bytes_.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                            vk::MemoryKind::HostVisible);
     for (const auto& p : manifest_.params) set_param(p.name, p.value);
-    // Per counter slot: evaluations, busy and all lane-iterations, rays reuse could shorten and the
-    // thousandths it skipped (march_counters.glsl).
     std::size_t slots = std::max<std::size_t>(1, graph_.counter_groups().size());
-    counters_ = std::make_unique<vk::Buffer>(ctx_, slots * 5 * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+    counters_ = std::make_unique<vk::Buffer>(ctx_, slots * FG_COUNTER_WORDS * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
     set_scene(make_gpu_scene(manifest_.scene));
 }
 
@@ -353,7 +351,7 @@ FrameStats FrameExecutor::run() {
     std::uint64_t total = 0;
     for (std::size_t i = 0; i < graph_.counter_groups().size(); ++i) {
         const std::string& group = graph_.counter_groups()[i];
-        const std::uint32_t* slot = counts + 5 * i;
+        const std::uint32_t* slot = counts + FG_COUNTER_WORDS * i;
         stats.evaluations[group] = slot[0];
         total += slot[0];
         if (slot[2] > 0) stats.lanes[group] = {slot[1], slot[2]};

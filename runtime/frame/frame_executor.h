@@ -54,8 +54,6 @@ public:
     void set_scene(const GpuScene& scene);
     // A parameter may change the distance: the previous frame's levels no longer hold.
     bool set_param(const std::string& name, const Constant& value);
-    // The next frame starts without reusing this one's levels.
-    void forget_history() { history_valid_ = false; }
 
     FrameStats run();
     // An image as the last frame left it; "<name>.previous" is a history image's frame before.
@@ -63,6 +61,7 @@ public:
     // For backends that copy a result on the GPU (an OpenXR swapchain, a window).
     vk::StorageImage& image(const std::string& name) const;
     const FrameGraph& graph() const { return graph_; }
+    const PackManifest& manifest() const { return manifest_; }
     std::uint64_t frames_run() const { return frames_run_; }
 
 private:

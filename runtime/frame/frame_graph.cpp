@@ -208,9 +208,10 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     }
     // Reuse rests on the scene staying put between frames, on the eyes' own levels (per-eye
     // marching, a perspective frame), and on origins that do not move with the camera (float).
-    g.reuse = knob("reuse") != 0.0 && manifest.find_spec("reuse") && !manifest.animated && !g.is_panorama() &&
+    const bool has_reuse_knob = manifest.find_spec("reuse") != nullptr;
+    g.reuse = has_reuse_knob && knob("reuse") != 0.0 && !manifest.animated && !g.is_panorama() &&
               g.settings.stereo == StereoMode::PerEye && manifest.precision == "float";
-    if (!g.reuse && manifest.find_spec("reuse")) g.settings.knobs["reuse"] = 0.0;
+    if (has_reuse_knob && !g.reuse) g.settings.knobs["reuse"] = 0.0;
     for (const auto& kind : frame_pass_kinds()) kind.add(g);
     for (const auto& p : g.passes_)
         if (!manifest.find_pass(p.program))

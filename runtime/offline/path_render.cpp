@@ -66,16 +66,15 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
     renderer_ = std::make_unique<HeadlessRenderer>(ctx, pack, frame_settings(settings_), stereo);
     Diagnostics diag;
     if (!check_path_params(path_, pack.manifest, diag)) throw std::runtime_error(diag.format("camera path"));
-    params_ = pack.manifest.params;
 }
 
 Rgba8Image PathRenderer::render(int frame) {
     CameraSample s = path_.sample(frame);
     renderer_->set_world_scale(s.world_scale);
     // Keyed parameters are uniforms: set before every frame, so each frame depends on its number only.
+    FrameExecutor& executor = renderer_->executor();
     for (const auto& [name, value] : s.params)
-        for (const auto& p : params_)
-            if (p.name == name) renderer_->executor().set_param(name, keyed_param_value(p, value));
+        if (const ManifestParam* p = executor.manifest().find_param(name)) executor.set_param(name, keyed_param_value(*p, value));
     RenderedFrame r = renderer_->render(s.head, s.time, static_cast<std::uint32_t>(frame));
     std::uint64_t evaluations = 0;
     for (const auto& [_, n] : r.stats.evaluations) evaluations += n;

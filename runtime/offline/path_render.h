@@ -47,7 +47,6 @@ private:
     CameraPath path_;
     PathRenderSettings settings_;
     std::unique_ptr<HeadlessRenderer> renderer_;
-    std::vector<ManifestParam> params_;   // the pack's, for the path's keyed parameters
     double last_evaluations_ = 0.0;
 };
 

@@ -28,6 +28,10 @@ const uint FG_PROJECTION_PERSPECTIVE = 0u;
 const uint FG_PROJECTION_EQUIRECT = 1u;
 const uint FG_PROJECTION_ODS = 2u;
 
+// Words per counter slot in the counters buffer (march_counters.glsl): evaluations, busy and all
+// lane-iterations, rays cross-frame reuse could shorten, and the thousandths it skipped.
+const uint FG_COUNTER_WORDS = 5u;
+
 // ODS fades the eyes' separation to none towards the poles (from 60 degrees of latitude to 90, a
 // smoothstep): near the zenith and nadir every column's eye looks at the same point from another
 // place on the IPD circle, which swirls in a headset (Google's ODS guidance does the same).

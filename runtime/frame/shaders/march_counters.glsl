@@ -2,9 +2,9 @@
 // constant, so the timed frames carry none of it): SDF evaluations, and how busy the SIMD lanes
 // were. Every iteration of a marching loop adds the subgroup's size to `total` and the lanes that
 // evaluated in it to `busy` (subgroup ballots), so busy / total is the lane efficiency: the share of
-// lane-iterations that did work rather than wait for the slowest ray of their group. The counts of
-// counter slot s are words 5s (evaluations), 5s + 1 (busy), 5s + 2 (total), and for cross-frame reuse
-// 5s + 3 (rays) and 5s + 4 (the thousandths of each ray that reuse skipped, summed).
+// lane-iterations that did work rather than wait for the slowest ray of their group. Counter slot s
+// is FG_COUNTER_WORDS words from s * FG_COUNTER_WORDS: evaluations, busy, total, and for cross-frame
+// reuse the rays and the thousandths of each ray that reuse skipped, summed.
 
 layout(set = 0, binding = 12, std430) buffer FgCounters { uint counts[]; } fg_counters;
 
@@ -36,7 +36,7 @@ void fg_count_iteration(bool busy)
 void fg_count_flush(int slot, uint evaluations)
 {
     if (!FG_COUNT_EVALUATIONS) return;
-    uint base = 5u * uint(slot);
+    uint base = FG_COUNTER_WORDS * uint(slot);
     if (evaluations > 0u) atomicAdd(fg_counters.counts[base], evaluations);
     if (fg_lanes_total > 0u) {
         atomicAdd(fg_counters.counts[base + 1u], fg_lanes_busy);
