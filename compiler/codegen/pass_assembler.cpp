@@ -38,10 +38,12 @@ PassTemplate parse_template(const EmbeddedFile& f) {
             words >> what;
             t.needs_surface = what == "surface";
             t.needs_scene = what != "nothing";
-        } else if (key == "include:") {
+            std::string more;
+            while (words >> more) t.needs_trap = t.needs_trap || more == "trap";
+        } else if (key == "include:" || key == "include-after-scene:") {
             std::string file;
             words >> file;
-            t.includes.push_back(file);
+            (key == "include:" ? t.includes : t.scene_includes).push_back(file);
         } else if (key == "when:") {
             std::string what;
             words >> what;
@@ -122,17 +124,20 @@ AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, 
     common.file = "runtime/frame/shaders/common.glsl";
     w.write(common_template(), common);
     w.blank();
-    for (const auto& file : pass.includes) {
+    auto paste = [&](const std::string& file) {
         SourceOrigin shared = common;
         shared.file = "runtime/frame/shaders/" + file;
         w.write(shared_template(file), shared);
         w.blank();
-    }
+    };
+    for (const auto& file : pass.includes) paste(file);
     if (pass.needs_scene) {
         scene.declarations(w);
         scene.distance_function(w);
     }
     if (pass.needs_surface) scene.surface_function(w);
+    if (pass.needs_trap) scene.trap_function(w);
+    for (const auto& file : pass.scene_includes) paste(file);
     SourceOrigin body;
     body.kind = SourceOrigin::Kind::Template;
     body.file = "runtime/frame/shaders/" + pass.file;

@@ -24,8 +24,10 @@ struct PassTemplate {
     std::string text;
     bool needs_surface = false;
     bool needs_scene = true;      // `needs: nothing`: a pass that never evaluates the scene gets none of its code
+    bool needs_trap = false;      // `needs: surface trap`: also fg_scene_trap (the AOV pass)
     std::vector<Effect> when_any;      // empty: always
     std::vector<std::string> includes; // shared template files pasted after common.glsl
+    std::vector<std::string> scene_includes;   // `include-after-scene:` files that call the scene's functions
     bool runs_with(const EffectSet& effects) const;
 };
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <functional>
+#include <optional>
 
 namespace fg {
 
@@ -224,6 +225,36 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     w.line(fmt::format("    s.rim = {};", field("rim", "0.0")), generated());
     w.line(fmt::format("    s.emission = {};", field("emission", "vec3(0.0)")), generated());
     w.line("    return s;", generated());
+    w.line("}", generated());
+    w.blank();
+}
+
+void SceneCodegen::trap_function(GlslWriter& w) const {
+    std::vector<bool> needed = needed_by({&ir_.outputs.at("distance")});
+    std::optional<IrInput> trap;
+    for (std::size_t i = 0; i < ir_.nodes.size() && !trap; ++i) {
+        const auto& outputs = ir_.nodes[i].def->outputs;
+        for (std::size_t k = 0; k < outputs.size() && needed[i]; ++k)
+            if (outputs[k].name == "trap" && ir_.nodes[i].output_types[k] == ValueType::Vec4) {
+                trap = IrInput{};
+                trap->kind = IrInput::Kind::Node;
+                trap->node = static_cast<int>(i);
+                trap->port = static_cast<int>(k);
+                trap->type = trap->source_type = ValueType::Vec4;
+                break;
+            }
+    }
+    if (trap) w.line("#define FG_HAS_TRAP_OUTPUT 1", generated());
+    // The fractal's body is already there (the distance needs it): this calls it once more.
+    w.line(double_ ? "vec4 fg_scene_trap(vec3 fg_relative_p)" : "vec4 fg_scene_trap(vec3 p)", generated());
+    w.line("{", generated());
+    if (!trap) {
+        w.line("    return vec4(0.0);", generated());
+    } else {
+        if (double_) w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
+        function_body(w, {&*trap}, false);
+        w.line(fmt::format("    return vec4({});", value_of(*trap, false)), generated());
+    }
     w.line("}", generated());
     w.blank();
 }

@@ -28,6 +28,9 @@ public:
     // The other bodies the surface outputs need (shade nodes call fg_scene_distance), and
     // fg_scene_surface.
     void surface_function(GlslWriter& w) const;
+    // vec4 fg_scene_trap(vec3 p): the orbit trap of the first fractal the distance uses, for the
+    // AOV pass (vec4(0) without one); FG_HAS_TRAP_OUTPUT says whether there is one.
+    void trap_function(GlslWriter& w) const;
 
 private:
     const IrGraph& ir_;

@@ -24,6 +24,7 @@ VkFormat vk_format(ImageFormat f) {
         case ImageFormat::R32F: return VK_FORMAT_R32_SFLOAT;
         case ImageFormat::RG32F: return VK_FORMAT_R32G32_SFLOAT;
         case ImageFormat::RGBA16F: return VK_FORMAT_R16G16B16A16_SFLOAT;
+        case ImageFormat::RGBA32F: return VK_FORMAT_R32G32B32A32_SFLOAT;
         case ImageFormat::RGBA8: return VK_FORMAT_R8G8B8A8_UNORM;
     }
     return VK_FORMAT_R32_SFLOAT;

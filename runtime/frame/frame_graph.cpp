@@ -32,12 +32,14 @@ const char* image_format_name(ImageFormat f) {
         case ImageFormat::R32F: return "r32f";
         case ImageFormat::RG32F: return "rg32f";
         case ImageFormat::RGBA16F: return "rgba16f";
+        case ImageFormat::RGBA32F: return "rgba32f";
         case ImageFormat::RGBA8: return "rgba8";
     }
     return "?";
 }
 
 std::uint32_t bytes_per_pixel(ImageFormat f) {
+    if (f == ImageFormat::RGBA32F) return 16;
     return f == ImageFormat::RG32F || f == ImageFormat::RGBA16F ? 8 : 4;
 }
 
@@ -219,6 +221,14 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     return g;
 }
 
+std::uint64_t FrameGraph::memory_bytes() const {
+    std::uint64_t bytes = 0;
+    for (const auto& i : images_)
+        bytes += static_cast<std::uint64_t>(i.width) * i.height * bytes_per_pixel(i.format) * (i.history ? 2 : 1);
+    for (const auto& b : buffers_) bytes += b.size;
+    return bytes;
+}
+
 std::string FrameGraph::describe() const {
     std::string s = settings.projection == Projection::Perspective
                         ? fmt::format("frame graph: {} stereo, {}x{} per eye, {} cone levels\n",
@@ -234,18 +244,15 @@ std::string FrameGraph::describe() const {
                                               : std::string("off"));
     auto names = effects.names();
     s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
-    std::size_t bytes = 0;
     s += fmt::format("images and buffers ({}):\n", images_.size() + buffers_.size());
     for (const auto& i : images_) {
-        bytes += static_cast<std::size_t>(i.width) * i.height * bytes_per_pixel(i.format) * (i.history ? 2 : 1);
         s += fmt::format("  {:<16} {:>5}x{:<5} {:<8} {}{}\n", i.name, i.width, i.height, image_format_name(i.format), i.about,
                          i.history ? " (kept for the next frame)" : "");
     }
     for (const auto& b : buffers_) {
-        bytes += b.size;
         s += fmt::format("  {:<16} {:>11} B        {}\n", b.name, b.size, b.about);
     }
-    s += fmt::format("  ({:.1f} MiB)\n", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    s += fmt::format("  ({:.1f} MiB)\n", static_cast<double>(memory_bytes()) / (1024.0 * 1024.0));
     auto order = batches();
     s += fmt::format("passes ({}, {} barriers):\n", passes_.size(), order.empty() ? 0 : order.size() - 1);
     for (std::size_t b = 0; b < order.size(); ++b)

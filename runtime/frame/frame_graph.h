@@ -21,7 +21,7 @@
 
 namespace fg {
 
-enum class ImageFormat { R32F, RG32F, RGBA16F, RGBA8 };
+enum class ImageFormat { R32F, RG32F, RGBA16F, RGBA32F, RGBA8 };
 const char* image_format_name(ImageFormat f);
 std::uint32_t bytes_per_pixel(ImageFormat f);
 
@@ -91,6 +91,8 @@ public:
     const FrameImage* find_image(const std::string& name) const;
     const FrameBuffer* find_buffer(const std::string& name) const;
     std::string describe() const;
+    // What the images (two of each history image) and buffers take.
+    std::uint64_t memory_bytes() const;
 
     // The passes in an order that keeps every declared dependency, grouped: the passes of a batch
     // depend on none of each other, and a barrier separates one batch from the next. A pass that

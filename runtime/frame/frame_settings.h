@@ -24,6 +24,8 @@ struct FrameSettings {
     Projection projection = Projection::Perspective;   // panoramas: offline renders
     std::uint32_t cone_levels = 5;              // conemarch levels including full resolution
     bool count_evaluations = false;             // SDF evaluations per pass (a specialization constant)
+    // The AOV pass: the picture's terms as images for a compositor (aov.* per eye; OpenEXR output).
+    bool aovs = false;
     // Fewer pixels: the lens mask skips what the headset's lens hides; fixed foveation marches and
     // shades one pixel in four beyond the fovea. Foveation < 0 takes the scene's foveation block
     // (off without one), 0 is off, > 0 is the fovea radius in half image heights.

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "aov_images.h"
+
 namespace fg {
 
 namespace {
@@ -49,9 +51,15 @@ RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::u
     std::string left = mono ? "centre" : "left";
     out.left = rgba8_from_bytes(executor_->download("final." + left), frame_.width, frame_.height);
     out.depth_left = floats(executor_->download("depth." + left));
+    auto download_aovs = [&](const std::string& eye, std::vector<std::vector<std::byte>>& into) {
+        if (!frame_.aovs) return;
+        for (const AovImage& a : aov_images()) into.push_back(executor_->download(aov_image_name(a, eye)));
+    };
+    download_aovs(left, out.aovs_left);
     if (!mono) {
         out.right = rgba8_from_bytes(executor_->download("final.right"), frame_.width, frame_.height);
         out.depth_right = floats(executor_->download("depth.right"));
+        download_aovs("right", out.aovs_right);
     }
     return out;
 }

@@ -16,6 +16,8 @@ struct RenderedFrame {
     Rgba8Image left, right;            // a mono projection (equirect) fills only left
 
     std::vector<float> depth_left, depth_right;
+    // With FrameSettings::aovs: each eye's AOV images as downloaded, in aov_images() order.
+    std::vector<std::vector<std::byte>> aovs_left, aovs_right;
     FrameStats stats;
 };
 
@@ -33,6 +35,7 @@ public:
     // Scene units per metre from the next frame on (a camera path zooms): the IPD follows it.
     void set_world_scale(double world_scale);
     FrameExecutor& executor() { return *executor_; }
+    const FrameGraph& graph() const { return executor_->graph(); }
 
 private:
     const vk::Context& ctx_;

@@ -26,6 +26,7 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     f.cone_levels = s.cone_levels;
     f.knobs = s.knobs;
     f.count_evaluations = s.count_evaluations;
+    f.aovs = needs_aovs(s.format);
     // Offline frames are for every part of the image: no lens mask, no foveation.
     f.lens_mask = false;
     f.foveation = 0.0;
@@ -50,12 +51,14 @@ std::string settings_fingerprint(const PathRenderSettings& s) {
     std::string knobs;
     for (const auto& [name, value] : s.knobs) knobs += fmt::format("{}={};", name, value);
     // count_evaluations is left out: it changes the work counted, not the pixels.
-    return fmt::format("{} {} {}x{} ss{} levels{} ipd{} knobs[{}]", projection_name(s.projection), stereo_mode_name(s.stereo),
-                       s.width, s.height, s.supersample, s.cone_levels, s.ipd_m, knobs);
+    std::string format = output_format_name(s.format);
+    if (s.format == OutputFormat::Exr) format += std::string("-") + exr_compression_name(s.compression);
+    return fmt::format("{} {} {}x{} ss{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
+                       stereo_mode_name(s.stereo), s.width, s.height, s.supersample, s.cone_levels, s.ipd_m, knobs, format);
 }
 
-std::string frame_image_path(const std::string& dir, int frame) {
-    return (std::filesystem::path(dir) / fmt::format("frame_{:06}.png", frame)).string();
+std::string frame_image_path(const std::string& dir, int frame, OutputFormat format) {
+    return (std::filesystem::path(dir) / fmt::format("frame_{:06}.{}", frame, output_extension(format))).string();
 }
 
 PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath path, PathRenderSettings settings)
@@ -68,7 +71,7 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
     if (!check_path_params(path_, pack.manifest, diag)) throw std::runtime_error(diag.format("camera path"));
 }
 
-Rgba8Image PathRenderer::render(int frame) {
+OfflineFrame PathRenderer::render_frame(int frame) {
     CameraSample s = path_.sample(frame);
     renderer_->set_world_scale(s.world_scale);
     // Keyed parameters are uniforms: set before every frame, so each frame depends on its number only.
@@ -82,12 +85,39 @@ Rgba8Image PathRenderer::render(int frame) {
                      settings_.supersample * settings_.supersample;
     last_evaluations_ = static_cast<double>(evaluations) / samples;
     std::uint32_t ss = settings_.supersample;
+    OfflineFrame out;
     switch (settings_.projection) {
-        case Projection::Equirect: return downsample(r.left, ss);
-        case Projection::Ods: return top_bottom(downsample(r.left, ss), downsample(r.right, ss));
-        case Projection::Perspective: break;
+        case Projection::Equirect: out.picture = downsample(r.left, ss); break;
+        case Projection::Ods: out.picture = top_bottom(downsample(r.left, ss), downsample(r.right, ss)); break;
+        case Projection::Perspective: out.picture = side_by_side(downsample(r.left, ss), downsample(r.right, ss)); break;
     }
-    return side_by_side(downsample(r.left, ss), downsample(r.right, ss));
+    if (!needs_aovs(settings_.format)) return out;
+    const bool perspective = settings_.projection == Projection::Perspective;
+    auto eye = [&](const std::string& name, const View& view, std::vector<std::vector<std::byte>>& aovs) {
+        OfflineEye e{name, settings_.width, settings_.height, {}, exr_camera(view, s.world_scale, perspective), !perspective};
+        // An 8K panorama's AOVs are gigabytes: moved, never copied.
+        e.aovs = downsample_aovs(std::move(aovs), settings_.width, settings_.height, ss);
+        out.eyes.push_back(std::move(e));
+    };
+    const StereoViews& views = renderer_->views();
+    if (is_mono(settings_.projection)) {
+        eye("centre", views.centre, r.aovs_left);
+    } else {
+        eye("left", views.left, r.aovs_left);
+        eye("right", views.right, r.aovs_right);
+    }
+    return out;
+}
+
+std::vector<std::uint8_t> PathRenderer::encode(const OfflineFrame& frame) const {
+    switch (settings_.format) {
+        case OutputFormat::Png: return png_bytes(frame.picture);
+        case OutputFormat::Png16: return encode_png16(frame.eyes, settings_.projection == Projection::Ods);
+        case OutputFormat::Exr: break;
+    }
+    std::vector<ExrPart> parts;
+    for (const OfflineEye& e : frame.eyes) parts.push_back({e.view, e.width, e.height, e.aovs, e.camera, e.panorama});
+    return encode_exr(parts, settings_.compression);
 }
 
 PathRunResult run_path(PathRenderer& renderer, const PathRun& run) {
@@ -96,29 +126,32 @@ PathRunResult run_path(PathRenderer& renderer, const PathRun& run) {
     auto start = std::chrono::steady_clock::now();
     std::unique_ptr<ProgressBar> bar;
     if (run.progress) bar = std::make_unique<ProgressBar>(run.frames.size());
-    // PNG encoding runs on the CPU at about 6 Mpixel/s: as long as a GPU frame at 8K. So frame n
-    // is encoded and written while frame n + 1 renders; one frame in flight bounds the memory.
-    std::future<void> writing;
+    // PNG encoding runs on the CPU at about 6 Mpixel/s: as long as a GPU frame at 8K (OpenEXR's
+    // ZIP is slower still). So frame n is encoded and written while frame n + 1 renders; one frame
+    // in flight bounds the memory.
+    std::future<double> writing;
     auto finish_writing = [&] {
         if (!writing.valid()) return;
-        writing.get();   // rethrows a failed write
+        result.write_seconds += writing.get();   // rethrows a failed write
         if (bar) bar->advance(false);
     };
     for (int f = run.frames.begin; f < run.frames.end; ++f) {
-        std::string image = frame_image_path(run.out_dir, f);
+        std::string image = frame_image_path(run.out_dir, f, renderer.settings().format);
         if (run.resume && frame_is_done(image, run.job)) {
             ++result.skipped;
             if (bar) bar->advance(true);
             continue;
         }
-        Rgba8Image pixels = renderer.render(f);
+        OfflineFrame pixels = renderer.render_frame(f);
         ++result.rendered;
         result.evaluations_per_sample += renderer.last_evaluations_per_sample();
         finish_writing();
-        writing = std::async(std::launch::async, [pixels = std::move(pixels), image, f, &run] {
-            auto bytes = png_bytes(pixels);
+        writing = std::async(std::launch::async, [pixels = std::move(pixels), image, f, &run, &renderer] {
+            auto began = std::chrono::steady_clock::now();
+            auto bytes = renderer.encode(pixels);
             if (bytes.empty() || !write_frame_atomically(image, bytes, f, run.job))
                 throw std::runtime_error(fmt::format("cannot write {}", image));
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         });
     }
     finish_writing();

@@ -11,6 +11,7 @@
 #include "camera_path.h"
 #include "frame/headless_renderer.h"
 #include "frame_range.h"
+#include "offline_image.h"
 
 namespace fg {
 
@@ -23,12 +24,21 @@ struct PathRenderSettings {
     double ipd_m = 0.064;
     std::map<std::string, double> knobs;
     bool count_evaluations = false;           // SDF evaluations per rendered sample, for cost estimates
+    OutputFormat format = OutputFormat::Png;
+    ExrCompression compression = ExrCompression::Zip;   // with OutputFormat::Exr
 };
 
 // Everything that changes the pixels, as text: part of the job fingerprint in each frame record.
 std::string settings_fingerprint(const PathRenderSettings& s);
-// DIR/frame_000042.png
-std::string frame_image_path(const std::string& dir, int frame);
+// DIR/frame_000042.png (.exr for OpenEXR)
+std::string frame_image_path(const std::string& dir, int frame, OutputFormat format = OutputFormat::Png);
+
+// A rendered frame before it is encoded: the picture, and with a format that needs them the AOV
+// images of each eye.
+struct OfflineFrame {
+    Rgba8Image picture;
+    std::vector<OfflineEye> eyes;
+};
 
 class PathRenderer {
 public:
@@ -36,10 +46,16 @@ public:
 
     // The output image of one frame: side-by-side eyes (perspective), one panorama (equirect), or
     // top-bottom panoramas with the left eye on top (ODS).
-    Rgba8Image render(int frame);
+    Rgba8Image render(int frame) { return render_frame(frame).picture; }
+    OfflineFrame render_frame(int frame);
+    // The frame's file in the settings' format (safe to call while the next frame renders).
+    std::vector<std::uint8_t> encode(const OfflineFrame& frame) const;
     // SDF evaluations per rendered sample (supersamples count) of the last frame, with counting on.
     double last_evaluations_per_sample() const { return last_evaluations_; }
     std::string describe() const { return renderer_->describe(); }
+    // The views of the last frame rendered.
+    const StereoViews& views() const { return renderer_->views(); }
+    const FrameGraph& graph() const { return renderer_->graph(); }
     const CameraPath& path() const { return path_; }
     const PathRenderSettings& settings() const { return settings_; }
 
@@ -61,6 +77,7 @@ struct PathRun {
 struct PathRunResult {
     int rendered = 0, skipped = 0;
     double seconds = 0.0;     // wall time of the whole range
+    double write_seconds = 0.0;   // encoding and writing, summed over frames (overlaps rendering)
     double evaluations_per_sample = 0.0;   // mean over the rendered frames (with counting on)
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "frame/frame_settings.h"
+#include "offline/offline_image.h"
 
 namespace fg::fgplay {
 
@@ -25,6 +26,8 @@ struct RenderOptions {
     std::string shard;               // I/N
     Projection projection = Projection::Perspective;
     std::uint32_t supersample = 1;
+    OutputFormat format = OutputFormat::Png;
+    ExrCompression compression = ExrCompression::Zip;
     bool resume = false;
     bool progress = true;
     double time = 0.0;

@@ -55,19 +55,24 @@ int render_path(const RenderOptions& o) {
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;
     s.count_evaluations = o.count;
+    s.format = o.format;
+    s.compression = o.compression;
     return run_reporting_errors([&] {
         vk::Context ctx(render_context_options(o.validation, o.device));
         PathRenderer renderer(ctx, *pack, *path, s);
         if (o.describe) fmt::print("{}", renderer.describe());
-        fmt::print("device: {}\n{} frames {}:{} of {} ({:.3g} fps path), {} {}x{} per eye, supersampling {}\n",
+        fmt::print("device: {}\n{} frames {}:{} of {} ({:.3g} fps path), {} {}x{} per eye, supersampling {}, {}\n",
                    ctx.device_name(), range->size(), range->begin, range->end, path->frame_count(), path->fps(),
-                   projection_name(s.projection), s.width, s.height, s.supersample);
+                   projection_name(s.projection), s.width, s.height, s.supersample, output_format_name(s.format));
         std::fflush(stdout);
         PathRun run{o.out, *range, job_fingerprint(o, s), o.resume, o.progress};
         PathRunResult result = run_path(renderer, run);
         double fps = result.rendered > 0 ? result.rendered / result.seconds : 0.0;
         fmt::print("rendered {} frames, skipped {} already done, in {:.1f} s: {:.3f} frames/s, {:.0f} frames/hour\n",
                    result.rendered, result.skipped, result.seconds, fps, 3600.0 * fps);
+        if (result.rendered > 0)
+            fmt::print("encoding and writing: {:.3f} s per frame (beside the next frame's rendering)\n",
+                       result.write_seconds / result.rendered);
         if (s.count_evaluations && result.rendered > 0)
             fmt::print("SDF evaluations per sample: {:.2f} (mean over the rendered frames)\n", result.evaluations_per_sample);
         if (validation_failed(ctx)) return 1;

@@ -23,6 +23,11 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_option("--path", r.path, "render a camera path (docs/camera-path.md) to DIR/frame_NNNNNN.png")->check(CLI::ExistingFile);
     render->add_option("--projection", c.projection, "with --path: perspective | equirect | ods")->capture_default_str();
     render->add_option("--supersample", r.supersample, "with --path: samples per pixel along each axis (1-8)")->capture_default_str();
+    render->add_option("--format", c.format,
+                       "with --path: png | png16 (16-bit, from the HDR beauty) | exr (OpenEXR with the beauty and "
+                       "passes for compositing)")
+        ->capture_default_str();
+    render->add_option("--exr-compression", c.compression, "with --format exr: zip | piz | none")->capture_default_str();
     render->add_option("--shard", r.shard, "with --path: I/N, render shard I of N of the frame range (a job array's index)");
     render->add_flag("--resume", r.resume, "with --path: skip frames already on disk and verified");
     render->add_flag("!--no-progress", r.progress, "with --path: no progress bar on stderr");
@@ -49,9 +54,18 @@ int RenderCommand::run() {
         fmt::print(stderr, "fgplay: --projection is perspective, equirect or ods, not '{}'\n", projection);
         return 2;
     }
+    if (!parse_output_format(format, r.format)) {
+        fmt::print(stderr, "fgplay: --format is png, png16 or exr, not '{}'\n", format);
+        return 2;
+    }
+    if (!parse_exr_compression(compression, r.compression)) {
+        fmt::print(stderr, "fgplay: --exr-compression is zip, piz or none, not '{}'\n", compression);
+        return 2;
+    }
     if (r.path.empty()) {
-        if (r.projection != Projection::Perspective || r.resume || !r.shard.empty() || r.supersample != 1) {
-            fmt::print(stderr, "fgplay: --projection, --supersample, --shard and --resume go with --path\n");
+        if (r.projection != Projection::Perspective || r.resume || !r.shard.empty() || r.supersample != 1 ||
+            command->count("--format") || command->count("--exr-compression")) {
+            fmt::print(stderr, "fgplay: --projection, --supersample, --format, --shard and --resume go with --path\n");
             return 2;
         }
         try {

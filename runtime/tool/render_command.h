@@ -11,7 +11,8 @@ namespace fg::fgplay {
 
 struct RenderCommand {
     RenderOptions options;
-    std::string size = "512x512", stereo = "per-eye", camera, frames = "1", projection = "perspective";
+    std::string size = "512x512", stereo = "per-eye", camera, frames = "1", projection = "perspective", format = "png",
+                compression = "zip";
     std::vector<std::string> knobs;
     bool naive = false;
     CLI::App* command = nullptr;

@@ -26,6 +26,18 @@ if(NOT rc EQUAL 0)
 endif()
 expect_failure("an unknown knob" "no_such_knob" ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --knob no_such_knob=1
                --out ${WORK}/x)
+expect_failure("an unknown output format" "--format is png, png16 or exr, not 'tiff'" ${FGPLAY} render ${WORK}/bulb.fgpack
+               --path ${SOURCE}/docs/mandelbulb_flight.json --format tiff --out ${WORK}/x)
+expect_failure("an output format without a path" "go with --path" ${FGPLAY} render ${WORK}/bulb.fgpack --format exr
+               --out ${WORK}/x)
+
+# A camera path to OpenEXR (tests/runtime/exr_output_test.cpp reads the files back).
+execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --path ${SOURCE}/docs/mandelbulb_flight.json --frames 0:1
+                        --size 32x32 --format exr --exr-compression piz --out ${WORK}/exr --no-progress --validation
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/exr/frame_000000.exr OR NOT out MATCHES "encoding and writing: [0-9.]+ s per frame")
+  message(FATAL_ERROR "fgplay render --format exr failed or wrote no frame_000000.exr: ${out}${err}")
+endif()
 
 execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --out ${WORK}/frame --describe --lens-mask
                         --foveation 0.5 --validation

@@ -148,6 +148,10 @@ struct ResolvePush {
     int levels;              // 1: also the level-0 atlas (conemarch), 0: depth and glow only (naive)
 };
 
+struct AovPush {
+    int view;
+};
+
 struct FoveaPush {
     int view;
 };

@@ -1,9 +1,9 @@
 //! pass: post
 //! needs: distance
 //! when: any-effect fog glow vignette
-// Post effects the pack lists, and only those: homogeneous scattering fog, glow from the closest
-// approach along the ray, the vignette; then tonemapping into the final image. (Foveation has
-// its own pass, fovea.comp, that runs after this one.)
+//! include: post_effects.glsl
+// Post effects the pack lists, and only those (post_effects.glsl); then tonemapping into the final
+// image. (Foveation has its own pass, fovea.comp, that runs after this one.)
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
@@ -13,12 +13,6 @@ layout(set = 0, binding = 5, r32f) uniform readonly image2D fg_glow;
 #endif
 layout(set = 0, binding = 6, rgba8) uniform writeonly image2D fg_final;
 layout(push_constant) uniform FgPostPush { PostPush pc; };
-
-vec3 fg_tonemap(vec3 c)
-{
-    c *= fg_scene.exposure;
-    return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
-}
 
 void main()
 {
@@ -31,21 +25,11 @@ void main()
     }
     vec3 color = imageLoad(fg_color, pixel).rgb;
     float t = imageLoad(fg_depth, pixel).x;
+    float closest = 0.0;
 #ifdef FG_HAS_GLOW
-    float closest = imageLoad(fg_glow, pixel).x;
-    color += fg_scene.glow_color * exp(-max(closest, 0.0) / fg_scene.glow_falloff);
+    closest = imageLoad(fg_glow, pixel).x;
 #endif
-#ifdef FG_HAS_FOG
-    float distance_through = t < 0.0 ? fg_scene.far_limit : t;
-    color = mix(fg_scene.fog_color, color, exp(-fg_scene.fog_density * distance_through));
-#endif
-#ifdef FG_HAS_VIGNETTE
-    // A comfort effect of the headset's frustum; a panorama has no edges to darken.
-    if (fg_frame.projection == FG_PROJECTION_PERSPECTIVE) {
-        vec2 q = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
-        color *= 1.0 - fg_scene.vignette * smoothstep(0.3, 1.4, dot(q, q));
-    }
-#endif
+    color = fg_post_effects(color, pixel, size, t, closest);
     // The fade (snap turns, the head in the surface) scales the displayed image linearly.
     imageStore(fg_final, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
 }

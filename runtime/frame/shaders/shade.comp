@@ -1,6 +1,8 @@
 //! pass: shade
 //! needs: surface
 //! when: always
+//! include: post_effects.glsl
+//! include-after-scene: shading.glsl
 // Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a
 // finite-difference normal only if something needs it, and the background for misses.
 
@@ -19,37 +21,6 @@ layout(set = 0, binding = 5, rgba8) uniform readonly image2D fg_other_color;
 #endif
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_other_depth;
 layout(push_constant) uniform FgShadePush { ShadePush pc; };
-
-vec3 fg_background(vec3 rd)
-{
-#ifdef FG_HAS_BACKGROUND_GRADIENT
-    return mix(fg_scene.bg_bottom.rgb, fg_scene.bg_top.rgb, clamp(0.5 + 0.5 * rd.y, 0.0, 1.0));
-#else
-    return fg_scene.bg_top.rgb;
-#endif
-}
-
-// A gradient can vanish (inside a body, where the field is flat, or below float's resolution):
-// normalize(0) is NaN, and adding 1e-20 does not help where denormals flush to zero (1e-40).
-vec3 fg_safe_normalize(vec3 g)
-{
-    float len2 = dot(g, g);
-    return len2 > 1e-30 ? g * inversesqrt(len2) : vec3(0.0, 1.0, 0.0);
-}
-
-vec3 fg_normal_at(vec3 p, float h)
-{
-    if (FG_NORMAL_TAPS >= 6) {
-        vec2 e = vec2(h, 0.0);
-        return fg_safe_normalize(vec3(fg_scene_distance(p + e.xyy) - fg_scene_distance(p - e.xyy),
-                                      fg_scene_distance(p + e.yxy) - fg_scene_distance(p - e.yxy),
-                                      fg_scene_distance(p + e.yyx) - fg_scene_distance(p - e.yyx)));
-    }
-    // Tetrahedral taps: four evaluations instead of six.
-    vec2 k = vec2(1.0, -1.0);
-    return fg_safe_normalize(k.xyy * fg_scene_distance(p + k.xyy * h) + k.yyx * fg_scene_distance(p + k.yyx * h) +
-                             k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h));
-}
 
 // Shading reuse across the eyes: the point p, seen by the other eye, lands on one of its pixels;
 // where that pixel's hit is the same point (depth agrees within FG_SHADE_REUSE cone radii), its
@@ -79,13 +50,6 @@ bool fg_reuse_other_eye(vec3 p, out vec4 color)
     return true;
 }
 
-vec3 fg_tonemap(vec3 c)
-{
-    // ACES fit (Narkowicz): keeps bright glow from clipping to white abruptly.
-    c *= fg_scene.exposure;
-    return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
-}
-
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
@@ -111,35 +75,9 @@ void main()
         }
         vec3 n = vec3(0.0, 1.0, 0.0);
 #ifdef FG_HAS_NORMALS
-        // The tap distance follows the pixel's footprint, so normals are as sharp as the image. Its
-        // floor (an eye inside the fractal has t = 0) scales with the viewer (world scale in
-        // world_scale: a scene at 1e-6 is smaller than a fixed 1e-6) and stays above float's spacing at p.
-        float floor_h = max(1e-6 * fg_frame.world_scale, 1e-6 * length(p));
-        n = fg_normal_at(p, max(fg_cone_tan(0) * t, floor_h));
+        n = fg_surface_normal(p, t);
 #endif
-        FgSurface s = fg_scene_surface(p, -rd, n);
-#ifdef FG_OUT_DIFFUSE
-        float diffuse = s.diffuse;
-#else
-        float diffuse = max(dot(n, fg_scene.light_dir.xyz), 0.0);
-#endif
-        // Each optional term exists only when the pack lists its effect: a scene without SSS, rim or
-        // emission carries no code for them.
-#ifdef FG_HAS_AO
-        float ao = s.ao;
-#else
-        float ao = 1.0;
-#endif
-        color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse);
-#ifdef FG_HAS_SSS
-        color += s.sss * fg_scene.sss_color.rgb * s.albedo;
-#endif
-#ifdef FG_HAS_RIM
-        color += s.rim * fg_scene.rim_color.rgb;
-#endif
-#ifdef FG_HAS_EMISSION
-        color += s.emission;
-#endif
+        color = fg_shade_hit(p, rd, n).color;
     }
 #ifdef FG_HAS_POST
     imageStore(fg_color, pixel, vec4(color, 1.0));

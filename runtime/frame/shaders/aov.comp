@@ -1,0 +1,68 @@
+//! pass: aov
+//! needs: surface trap
+//! when: always
+//! include: post_effects.glsl
+//! include-after-scene: shading.glsl
+// The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
+// beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse
+// factor and the orbit trap. Runs only when an offline render asks for them; it shades each hit
+// once more with the shade pass's own functions, so the beauty is the picture's colour.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
+#ifdef FG_HAS_GLOW
+layout(set = 0, binding = 4, r32f) uniform readonly image2D fg_glow;
+#endif
+layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D fg_beauty;     // rgb linear HDR, exposed; a 1
+layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D fg_position;   // xyz world, w camera depth (metres)
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_normal;     // xyz unit normal, w AO
+layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D fg_albedo;     // rgb albedo, w diffuse factor
+layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D fg_trap;       // the fractal's orbit trap
+layout(push_constant) uniform FgAovPush { AovPush pc; };
+
+void main()
+{
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(fg_frame.eye_size);
+    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+    vec3 ro = fg_ray_origin(pc.view, uv);
+    vec3 rd = fg_ray_dir(pc.view, uv);
+    float t = imageLoad(fg_depth, pixel).x;
+    float closest = 0.0;
+#ifdef FG_HAS_GLOW
+    closest = imageLoad(fg_glow, pixel).x;
+#endif
+    if (t < 0.0) {
+        vec3 beauty = fg_post_effects(fg_background(rd), pixel, size, t, closest);
+        imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
+        // A miss is infinitely far (as Nuke and Blender read depth); it has no surface.
+        imageStore(fg_position, pixel, vec4(0.0, 0.0, 0.0, uintBitsToFloat(0x7f800000u)));
+        imageStore(fg_normal, pixel, vec4(0.0));
+        imageStore(fg_albedo, pixel, vec4(0.0));
+        imageStore(fg_trap, pixel, vec4(0.0));
+        return;
+    }
+    vec3 p = ro + rd * t;
+    // The normal is written even where the picture needs none; the shading sees what shade saw.
+    vec3 n = fg_surface_normal(p, t);
+#ifdef FG_HAS_NORMALS
+    FgShading s = fg_shade_hit(p, rd, n);
+#else
+    FgShading s = fg_shade_hit(p, rd, vec3(0.0, 1.0, 0.0));
+#endif
+    vec3 beauty = fg_post_effects(s.color, pixel, size, t, closest);
+    imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
+    // Camera depth: along the view axis in perspective, along the ray in a panorama; metres.
+    GpuView v = fg_frame.views[pc.view];
+    float along = fg_frame.projection == FG_PROJECTION_PERSPECTIVE ? t * dot(rd, v.forward.xyz) : t;
+#ifdef FG_DOUBLE_SCENE
+    vec3 world = vec3(fg_anchor() + dvec3(p));
+#else
+    vec3 world = p;
+#endif
+    imageStore(fg_position, pixel, vec4(world, along / fg_frame.world_scale));
+    imageStore(fg_normal, pixel, vec4(n, s.ao));
+    imageStore(fg_albedo, pixel, vec4(s.albedo, s.diffuse));
+    imageStore(fg_trap, pixel, fg_scene_trap(p));
+}

@@ -1,0 +1,80 @@
+// The shading of a hit, shared by the shade pass (the picture) and the AOV pass (its terms for a
+// compositor), so the two cannot drift apart. Pasted after the scene's functions
+// (`//! include-after-scene:`), which it calls.
+
+vec3 fg_background(vec3 rd)
+{
+#ifdef FG_HAS_BACKGROUND_GRADIENT
+    return mix(fg_scene.bg_bottom.rgb, fg_scene.bg_top.rgb, clamp(0.5 + 0.5 * rd.y, 0.0, 1.0));
+#else
+    return fg_scene.bg_top.rgb;
+#endif
+}
+
+// A gradient can vanish (inside a body, where the field is flat, or below float's resolution):
+// normalize(0) is NaN, and adding 1e-20 does not help where denormals flush to zero (1e-40).
+vec3 fg_safe_normalize(vec3 g)
+{
+    float len2 = dot(g, g);
+    return len2 > 1e-30 ? g * inversesqrt(len2) : vec3(0.0, 1.0, 0.0);
+}
+
+vec3 fg_normal_at(vec3 p, float h)
+{
+    if (FG_NORMAL_TAPS >= 6) {
+        vec2 e = vec2(h, 0.0);
+        return fg_safe_normalize(vec3(fg_scene_distance(p + e.xyy) - fg_scene_distance(p - e.xyy),
+                                      fg_scene_distance(p + e.yxy) - fg_scene_distance(p - e.yxy),
+                                      fg_scene_distance(p + e.yyx) - fg_scene_distance(p - e.yyx)));
+    }
+    // Tetrahedral taps: four evaluations instead of six.
+    vec2 k = vec2(1.0, -1.0);
+    return fg_safe_normalize(k.xyy * fg_scene_distance(p + k.xyy * h) + k.yyx * fg_scene_distance(p + k.yyx * h) +
+                             k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h));
+}
+
+// The normal at a hit at distance t. The tap distance follows the pixel's footprint, so normals are
+// as sharp as the image. Its floor (an eye inside the fractal has t = 0) scales with the viewer
+// (world scale in world_scale: a scene at 1e-6 is smaller than a fixed 1e-6) and stays above
+// float's spacing at p.
+vec3 fg_surface_normal(vec3 p, float t)
+{
+    float floor_h = max(1e-6 * fg_frame.world_scale, 1e-6 * length(p));
+    return fg_normal_at(p, max(fg_cone_tan(0) * t, floor_h));
+}
+
+struct FgShading {
+    vec3 color;      // linear, before post effects and the tone map
+    vec3 albedo;
+    float diffuse;   // the light's diffuse factor
+    float ao;
+};
+
+// Shades the hit p seen along rd with normal n (the graph's surface outputs, fake lighting, emission).
+FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n)
+{
+    FgSurface s = fg_scene_surface(p, -rd, n);
+#ifdef FG_OUT_DIFFUSE
+    float diffuse = s.diffuse;
+#else
+    float diffuse = max(dot(n, fg_scene.light_dir.xyz), 0.0);
+#endif
+    // Each optional term exists only when the pack lists its effect: a scene without SSS, rim or
+    // emission carries no code for them.
+#ifdef FG_HAS_AO
+    float ao = s.ao;
+#else
+    float ao = 1.0;
+#endif
+    vec3 color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse);
+#ifdef FG_HAS_SSS
+    color += s.sss * fg_scene.sss_color.rgb * s.albedo;
+#endif
+#ifdef FG_HAS_RIM
+    color += s.rim * fg_scene.rim_color.rgb;
+#endif
+#ifdef FG_HAS_EMISSION
+    color += s.emission;
+#endif
+    return FgShading(color, s.albedo, diffuse, ao);
+}
