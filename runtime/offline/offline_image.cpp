@@ -113,6 +113,9 @@ std::vector<std::uint8_t> encode_png16(const std::vector<OfflineEye>& eyes, bool
         throw std::runtime_error("libpng could not encode a 16-bit PNG");
     }
     png_set_write_fn(png, &out, png_append, nullptr);
+    // zlib's default level takes 2.5-6x as long on 16-bit samples for files 10-35 % smaller: level 1
+    // keeps the encoding within the next frame's rendering.
+    png_set_compression_level(png, 1);
     png_set_IHDR(png, info, width, height, 16, PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
     // The values are display-encoded, as the 8-bit PNG's are: say sRGB, not linear.

@@ -247,6 +247,42 @@ TEST_F(ExrOutput, exr_frames_resume_like_png_frames_and_are_the_same_bytes_every
     EXPECT_EQ(a, b);
 }
 
+TEST_F(ExrOutput, supersampling_box_filters_the_beauty_and_takes_the_central_sample_of_the_data_passes) {
+    // An equirect panorama: one part, "centre". Rendered 2x2 per pixel, and once at twice the size.
+    settings_.projection = Projection::Equirect;
+    settings_.width = 64;
+    settings_.height = 32;
+    auto write_read = [&](const PathRenderSettings& s, const std::string& name) {
+        PathRenderer renderer(test::shared_context(), pack_, *path_, s);
+        auto bytes = renderer.encode(renderer.render_frame(0));
+        const std::string file = (dir_ / name).string();
+        std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                    static_cast<std::streamsize>(bytes.size()));
+        return read_exr(file);
+    };
+    PathRenderSettings super = settings_;
+    super.supersample = 2;
+    PathRenderSettings big = settings_;
+    big.width *= 2;
+    big.height *= 2;
+    auto s = write_read(super, "super.exr");
+    auto b = write_read(big, "big.exr");
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_EQ(s[0].header.name(), "centre");
+    EXPECT_TRUE(Imf::hasEnvmap(s[0].header));
+    EXPECT_FALSE(Imf::hasWorldToNDC(s[0].header));
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) {
+            double mean = 0.0;
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i) mean += 0.25 * b[0].at("G", 2 * x + i, 2 * y + j);
+            // Half precision of the four samples and of their mean.
+            EXPECT_NEAR(s[0].at("G", x, y), mean, 2e-3 * (1.0 + mean)) << x << "," << y;
+            EXPECT_EQ(s[0].at("Z", x, y), b[0].at("Z", 2 * x + 1, 2 * y + 1)) << x << "," << y;
+            EXPECT_EQ(s[0].at("N.Y", x, y), b[0].at("N.Y", 2 * x + 1, 2 * y + 1)) << x << "," << y;
+        }
+}
+
 TEST_F(ExrOutput, a_16_bit_png_is_the_picture_with_more_levels) {
     settings_.format = OutputFormat::Png16;
     PathRenderer renderer(test::shared_context(), pack_, *path_, settings_);
