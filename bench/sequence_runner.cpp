@@ -149,6 +149,8 @@ void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, co
         set_brightness(*r.timed, scene, tf.brightness);
         RenderedFrame frame = r.timed->render(tf.head, tf.time, index);
         f.gpu_ms = frame.stats.gpu_ms.count("frame") ? frame.stats.gpu_ms.at("frame") : 0.0;
+        for (const char* pass : {"shade", "post", "fovea"})
+            if (auto it = frame.stats.gpu_ms.find(pass); it != frame.stats.gpu_ms.end()) f.after_march_ms += it->second;
         compare(frame, ref, pixel_half_diagonal, r, f);
         // A setting that reuses the frame before renders every frame on the counting renderer too,
         // so that its history is the timed one's; the figures are taken every count_every frames.

@@ -25,6 +25,9 @@ std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool qui
         FrameSettings reuse = method(StereoMode::PerEye, false, f);
         reuse.knobs["reuse"] = 1;
         out.push_back({"per-eye + reuse", pixels, reuse});
+        FrameSettings history = method(StereoMode::PerEye, false, f);
+        history.knobs["shade_history"] = 0.5;
+        out.push_back({"per-eye + shading history", pixels, history});
     };
     add_methods(kAllPixels, all);
     if (!quick) {

@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 17> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 18> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -57,6 +57,9 @@ inline constexpr std::array<GlobalKnob, 17> kGlobalKnobs{{
      "full-resolution marching passes hand each SIMD lane the next pixel as soon as its ray ends (same frames)"},
     {17, "reuse", "FG_REUSE", ValueType::Bool, 0, 0, 1,
      "per-eye conemarch starts each cone where the previous frame's levels prove it empty (a static scene)"},
+    {18, "shade_history", "FG_SHADE_HISTORY", ValueType::Float, 0.0, 0.0, 8.0,
+     "an eye takes the previous frame's shading where it hits the same point within this many cone radii "
+     "(a static scene without view-dependent terms); 0 is off"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -238,11 +238,20 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     frame_data_.previous[0] = previous_views_[0];
     frame_data_.previous[1] = previous_views_[1];
     frame_data_.reuse = graph_.reuse && history_valid_ ? 1u : 0u;
+    frame_data_.shade_history = graph_.shade_history && history_valid_ ? 1u : 0u;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
 }
 
 void FrameExecutor::set_scene(const GpuScene& scene) {
+    // Shading history holds colours lit by the old light and background; the fade comes after it.
+    GpuScene unfaded = scene;
+    unfaded.fade = scene_data_.fade;
+    if (graph_.shade_history && std::memcmp(&unfaded, &scene_data_, sizeof scene) != 0) {
+        history_valid_ = false;
+        set_frame(frame_data_);
+    }
+    scene_data_ = scene;
     std::memcpy(scene_->data(), &scene, sizeof scene);
     scene_->flush();
 }
@@ -251,7 +260,7 @@ bool FrameExecutor::set_param(const std::string& name, const Constant& value) {
     const auto* p = manifest_.find_param(name);
     if (!p) return false;
     history_valid_ = false;
-    if (frame_data_.reuse) set_frame(frame_data_);
+    if (frame_data_.reuse || frame_data_.shade_history) set_frame(frame_data_);
     for (int i = 0; i < component_count(p->type); ++i) {
         std::byte* at = params_bytes_.data() + p->offset + 4 * static_cast<std::size_t>(i);
         double v = value.v[static_cast<std::size_t>(i)];

@@ -51,6 +51,7 @@ public:
     // The frame's uniforms; the executor adds the previous frame's eyes and whether its levels hold
     // for this one (cross-frame reuse).
     void set_frame(const GpuFrame& frame);
+    // A changed scene setting (light, background...) forgets the shading history.
     void set_scene(const GpuScene& scene);
     // A parameter may change the distance: the previous frame's levels no longer hold.
     bool set_param(const std::string& name, const Constant& value);
@@ -93,6 +94,7 @@ private:
     bool images_initialised_ = false;
     std::uint64_t frames_run_ = 0;
     GpuFrame frame_data_{};
+    GpuScene scene_data_{};
     GpuView previous_views_[2]{};   // the eyes of the last frame run
     bool history_valid_ = false;
 };

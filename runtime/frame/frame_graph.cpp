@@ -214,6 +214,10 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.reuse = has_reuse_knob && knob("reuse") != 0.0 && !manifest.animated && !g.is_panorama() &&
               g.settings.stereo == StereoMode::PerEye && manifest.precision == "float";
     if (has_reuse_knob && !g.reuse) g.settings.knobs["reuse"] = 0.0;
+    const bool has_history_knob = manifest.find_spec("shade_history") != nullptr;
+    g.shade_history = has_history_knob && knob("shade_history") > 0.0 && !manifest.animated && !g.is_panorama() &&
+                      manifest.precision == "float" && !g.effects.has(Effect::Rim) && !g.effects.has(Effect::Subsurface);
+    if (has_history_knob && !g.shade_history) g.settings.knobs["shade_history"] = 0.0;
     for (const auto& kind : frame_pass_kinds()) kind.add(g);
     for (const auto& p : g.passes_)
         if (!manifest.find_pass(p.program))

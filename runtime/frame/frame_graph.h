@@ -138,6 +138,9 @@ public:
     bool persistent_lanes = false;     // the persistent_lanes knob (then there is no tail pass)
     // The reuse knob, where it can hold: per-eye perspective frames of a static float scene.
     bool reuse = false;
+    // The shade_history knob, where it can hold: a static float scene in perspective whose shading
+    // does not depend on the view direction (no rim, no SSS).
+    bool shade_history = false;
     bool manifest_has_tail = false;    // the pack has the tail program
 
 private:

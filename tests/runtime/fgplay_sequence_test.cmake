@@ -57,7 +57,8 @@ function(ten_thousandths value out)
   set(${out} ${v} PARENT_SCOPE)
 endfunction()
 
-set(settings "naive" "naive + persistent lanes" "per-eye" "per-eye + persistent lanes" "per-eye + reuse")
+set(settings "naive" "naive + persistent lanes" "per-eye" "per-eye + persistent lanes" "per-eye + reuse"
+    "per-eye + shading history")
 list(LENGTH lines n)
 list(LENGTH settings setting_count)
 math(EXPR expected "5 * ${setting_count}")
@@ -92,7 +93,7 @@ foreach(trace ${traces})
   endforeach()
   string(MAKE_C_IDENTIFIER "${trace}_naive" naive)
   math(EXPR allowed "${wrong_${naive}} + 5000")
-  foreach(setting "per-eye" "per-eye + persistent lanes" "per-eye + reuse")
+  foreach(setting "per-eye" "per-eye + persistent lanes" "per-eye + reuse" "per-eye + shading history")
     string(MAKE_C_IDENTIFIER "${trace}_${setting}" key)
     if(wrong_${key} GREATER allowed)
       message(FATAL_ERROR "${trace}: ${setting} misclassifies ${wrong_${key}} 1e-4 % of the pixels, naive "

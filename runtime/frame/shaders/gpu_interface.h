@@ -75,7 +75,7 @@ struct GpuFrame {
     // a changed parameter or a new pack).
     GpuView previous[2];
     uint reuse;
-    uint unused_2;
+    uint shade_history;      // 1: the previous frame's shading holds for this one (FG_SHADE_HISTORY)
     uint unused_3;
     uint unused_4;
 };

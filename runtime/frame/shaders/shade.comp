@@ -20,6 +20,11 @@ layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_other_color;
 layout(set = 0, binding = 5, rgba8) uniform readonly image2D fg_other_color;
 #endif
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_other_depth;
+// This eye's shading of the frame before and of this one, for FG_SHADE_HISTORY (bound either way).
+layout(set = 0, binding = 7, rgba16f) uniform readonly image2D fg_history_color;   // rgb, a = age
+layout(set = 0, binding = 8, r32f) uniform readonly image2D fg_history_depth;
+layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D fg_cache_color;
+layout(set = 0, binding = 10, r32f) uniform writeonly image2D fg_cache_depth;
 layout(push_constant) uniform FgShadePush { ShadePush pc; };
 
 // Shading reuse across the eyes: the point p, seen by the other eye, lands on one of its pixels;
@@ -50,6 +55,38 @@ bool fg_reuse_other_eye(vec3 p, out vec4 color)
     return true;
 }
 
+// Shading history: the point p, seen by this eye in the frame before, lands on one of its pixels;
+// where that pixel's hit is the same point (within FG_SHADE_HISTORY cone radii), its colour is
+// taken. Only view-independent shading qualifies (no rim, no SSS: the frame graph checks), and a
+// colour is recomputed after kHistoryAge reuses so small errors cannot accumulate.
+const float kHistoryAge = 2.0;
+
+bool fg_reuse_previous_frame(vec3 p, float t, out vec4 color)
+{
+    GpuView o = fg_frame.previous[pc.view];
+    vec3 q = p - o.origin.xyz;
+    float z = dot(q, o.forward.xyz);
+    if (z <= 0.0) return false;
+    vec2 tangent = vec2(dot(q, o.right.xyz), dot(q, o.up.xyz)) / z;
+    vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
+                   (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
+    ivec2 size = ivec2(fg_frame.eye_size);
+    ivec2 at = ivec2(floor(uv * vec2(size)));
+    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
+    // A foveated-away pixel was never shaded (the fovea pass filled it).
+    if (((at.x | at.y) & 1) != 0 && fg_periphery(pc.view, at) >= 1.0) return false;
+    float t_old = imageLoad(fg_history_depth, at).x;
+    if (t_old < 0.0) return false;
+    color = imageLoad(fg_history_color, at);
+    if (color.a >= kHistoryAge) return false;
+    // The old pixel's hit, on the old ray through its centre.
+    vec2 c = (vec2(at) + 0.5) / vec2(size);
+    vec3 old_dir = normalize(o.forward.xyz + mix(o.tan_fov.x, o.tan_fov.y, c.x) * o.right.xyz +
+                             mix(o.tan_fov.w, o.tan_fov.z, c.y) * o.up.xyz);
+    vec3 old_hit = o.origin.xyz + old_dir * t_old;
+    return length(old_hit - p) <= FG_SHADE_HISTORY * fg_cone_tan(0) * t;
+}
+
 void main()
 {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
@@ -57,6 +94,7 @@ void main()
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {
         imageStore(fg_color, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        if (FG_SHADE_HISTORY > 0.0) imageStore(fg_cache_depth, pixel, vec4(-1.0));
         return;
     }
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
@@ -64,6 +102,7 @@ void main()
     vec3 rd = fg_ray_dir(pc.view, uv);
     float t = imageLoad(fg_depth, pixel).x;
     vec3 color;
+    float age = 0.0;
     if (t < 0.0) {
         color = fg_background(rd);
     } else {
@@ -71,13 +110,24 @@ void main()
         vec4 reused;
         if (FG_SHADE_REUSE > 0.0 && pc.reuse != 0 && fg_reuse_other_eye(p, reused)) {
             imageStore(fg_color, pixel, reused);
+            // The other eye's colour is tone mapped without post: no source for the next frame.
+            if (FG_SHADE_HISTORY > 0.0) imageStore(fg_cache_depth, pixel, vec4(-1.0));
             return;
         }
-        vec3 n = vec3(0.0, 1.0, 0.0);
+        if (FG_SHADE_HISTORY > 0.0 && fg_frame.shade_history != 0u && fg_reuse_previous_frame(p, t, reused)) {
+            color = reused.rgb;
+            age = reused.a + 1.0;
+        } else {
+            vec3 n = vec3(0.0, 1.0, 0.0);
 #ifdef FG_HAS_NORMALS
-        n = fg_surface_normal(p, t);
+            n = fg_surface_normal(p, t);
 #endif
-        color = fg_shade_hit(p, rd, n).color;
+            color = fg_shade_hit(p, rd, n).color;
+        }
+    }
+    if (FG_SHADE_HISTORY > 0.0) {
+        imageStore(fg_cache_color, pixel, vec4(color, age));
+        imageStore(fg_cache_depth, pixel, vec4(t));
     }
 #ifdef FG_HAS_POST
     imageStore(fg_color, pixel, vec4(color, 1.0));
