@@ -28,6 +28,12 @@ std::size_t offered_extensions() {
     return std::size(kExtensions) - (off && *off == '1' ? 1 : 0);
 }
 
+bool chain_has(const void* next, VkStructureType type) {
+    for (auto* s = static_cast<const VkBaseInStructure*>(next); s; s = s->pNext)
+        if (s->sType == type) return true;
+    return false;
+}
+
 template <typename T, typename Fill>
 XrResult two_call(std::uint32_t capacity, std::uint32_t* count, T* out, std::size_t size, Fill fill) {
     if (!count) return XR_ERROR_VALIDATION_FAILURE;
@@ -255,7 +261,18 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateVulkanDeviceKHR(XrInstance handle, const Xr
     if (!g_vk_instance) return XR_ERROR_RUNTIME_FAILURE;
     auto create = reinterpret_cast<PFN_vkCreateDevice>(info->pfnGetInstanceProcAddr(g_vk_instance, "vkCreateDevice"));
     if (!create) return XR_ERROR_RUNTIME_FAILURE;
-    *vk_result = create(info->vulkanPhysicalDevice, info->vulkanCreateInfo, info->vulkanAllocator, out);
+    // As Monado does for its compositor: where the application's chain has no
+    // VkPhysicalDeviceTimelineSemaphoreFeatures, one goes in front. Legal on its own, invalid next
+    // to an application's VkPhysicalDeviceVulkan12Features (VUID-VkDeviceCreateInfo-pNext-02830).
+    VkDeviceCreateInfo modified = *info->vulkanCreateInfo;
+    VkPhysicalDeviceTimelineSemaphoreFeatures timeline{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES};
+    if (!chain_has(modified.pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES)) {
+        timeline.timelineSemaphore = VK_TRUE;
+        timeline.pNext = const_cast<void*>(modified.pNext);
+        modified.pNext = &timeline;
+        inst->report.device_features_added.push_back("VkPhysicalDeviceTimelineSemaphoreFeatures");
+    }
+    *vk_result = create(info->vulkanPhysicalDevice, &modified, info->vulkanAllocator, out);
     if (*vk_result == VK_SUCCESS) inst->report.vulkan_device_created = true;
     return XR_SUCCESS;
 }

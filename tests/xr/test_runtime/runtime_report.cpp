@@ -27,6 +27,7 @@ void RuntimeReport::write() const {
     j["visibility_mask_calls"] = visibility_mask_calls;
     j["vulkan_instance_created_by_runtime"] = vulkan_instance_created;
     j["vulkan_device_created_by_runtime"] = vulkan_device_created;
+    j["device_features_added_by_runtime"] = device_features_added;
     j["exit_requested"] = exit_requested;
     j["session_ended"] = session_ended;
     j["session_destroyed"] = session_destroyed;

@@ -13,6 +13,7 @@ struct RuntimeReport {
     std::vector<std::string> swapchains;  // "R8G8B8A8_UNORM 96x96"
     int visibility_mask_calls = 0;
     bool vulkan_instance_created = false, vulkan_device_created = false;
+    std::vector<std::string> device_features_added;   // feature structs the runtime put into fgplay's device chain
     bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;
     double mean_luma_left = 0.0, mean_luma_right = 0.0;   // of the last checked frame
     double eyes_differ_fraction = 0.0;                     // of the last checked frame
