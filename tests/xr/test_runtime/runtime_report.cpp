@@ -40,6 +40,7 @@ void RuntimeReport::write() const {
     j["actions_synced"] = actions_synced;
     if (reference_compared)
         j["reference"] = {{"differ_fraction", reference_differ_fraction}, {"max_diff", reference_max_diff}};
+    j["colour"] = {{"eyes_compared", colour.eyes_compared}, {"worst", colour.worst}, {"steps", colour.steps}};
     j["depth_layer"] = {{"frames_with_depth", frames_with_depth},
                         {"format", depth_format},
                         {"sky_fraction_left", sky_fraction[0]},
