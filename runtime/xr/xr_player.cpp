@@ -84,12 +84,14 @@ public:
         std::vector<std::int64_t> formats(count);
         check(xrEnumerateSwapchainFormats(session_, count, &count, formats.data()), "xrEnumerateSwapchainFormats");
         format_ = choose_eye_swapchain_format(ctx, formats);
+        // Each eye's swapchains at its own recommended size (a runtime may recommend different
+        // ones); the frame graph renders both eyes at the larger, and each is scaled into its own.
         for (int eye = 0; eye < 2; ++eye)
             swapchains_[eye] = std::make_unique<EyeSwapchain>(session_, format_, views[eye].recommendedImageRectWidth,
                                                               views[eye].recommendedImageRectHeight);
-        make_depth_swapchains(formats, views[0].recommendedImageRectWidth, views[0].recommendedImageRectHeight);
-        base_width_ = o.width ? o.width : views[0].recommendedImageRectWidth;
-        base_height_ = o.height ? o.height : views[0].recommendedImageRectHeight;
+        make_depth_swapchains(formats, views);
+        base_width_ = o.width ? o.width : std::max(views[0].recommendedImageRectWidth, views[1].recommendedImageRectWidth);
+        base_height_ = o.height ? o.height : std::max(views[0].recommendedImageRectHeight, views[1].recommendedImageRectHeight);
         frame_.width = base_width_;
         frame_.height = base_height_;
         governor_ = std::make_unique<FrameGovernor>(o.ladder.empty() ? governor_ladder(pack.manifest) : o.ladder);
@@ -376,7 +378,7 @@ private:
     }
 
     // XR_KHR_composition_layer_depth where the runtime has it, in a depth format it lists.
-    void make_depth_swapchains(const std::vector<std::int64_t>& formats, std::uint32_t width, std::uint32_t height) {
+    void make_depth_swapchains(const std::vector<std::int64_t>& formats, const std::vector<XrViewConfigurationView>& views) {
         if (!instance_.has_depth_layer()) {
             fmt::print("depth layer: the runtime has no XR_KHR_composition_layer_depth; no depth is submitted\n");
             return;
@@ -389,10 +391,14 @@ private:
         // The projection's far plane is the march's far limit: every hit is nearer, the sky is there.
         depth_projection_.far_m = static_cast<float>(scene_.max_distance / scene_.world_scale);
         depth_projection_.near_m = std::min(0.05f, 0.01f * depth_projection_.far_m);
-        for (int eye = 0; eye < 2; ++eye) depth_[eye] = std::make_unique<DepthSwapchain>(ctx_, session_, *format, width, height);
-        fmt::print("depth layer: XR_KHR_composition_layer_depth, {} {}x{} per eye, near {:g} m, far {:g} m\n",
-                   *format == VK_FORMAT_D32_SFLOAT ? "D32_SFLOAT" : "D16_UNORM", width, height, depth_projection_.near_m,
-                   depth_projection_.far_m);
+        // The same size as the eye's colour swapchain.
+        for (int eye = 0; eye < 2; ++eye)
+            depth_[eye] = std::make_unique<DepthSwapchain>(ctx_, session_, *format, views[eye].recommendedImageRectWidth,
+                                                           views[eye].recommendedImageRectHeight);
+        fmt::print("depth layer: XR_KHR_composition_layer_depth, {} {}x{} and {}x{}, near {:g} m, far {:g} m\n",
+                   *format == VK_FORMAT_D32_SFLOAT ? "D32_SFLOAT" : "D16_UNORM", views[0].recommendedImageRectWidth,
+                   views[0].recommendedImageRectHeight, views[1].recommendedImageRectWidth, views[1].recommendedImageRectHeight,
+                   depth_projection_.near_m, depth_projection_.far_m);
     }
 
     void update_lens_masks(const StereoViews& sv) {
@@ -496,9 +502,9 @@ int play_xr(const XrPlayOptions& o) {
                 rc = player.run();
                 const auto& s = player.stats();
                 const auto& f = player.frame_settings();
-                fmt::print("frames: {} ({} stereo, render {}x{} per eye, swapchains {}x{} format {})\n", s.frames,
-                           stereo_mode_name(f.stereo), f.width, f.height, player.swapchain(0).width(),
-                           player.swapchain(0).height(), colour_format_name(player.format()));
+                fmt::print("frames: {} ({} stereo, render {}x{} per eye, swapchains {}x{} and {}x{} format {})\n", s.frames,
+                           stereo_mode_name(f.stereo), f.width, f.height, player.swapchain(0).width(), player.swapchain(0).height(),
+                           player.swapchain(1).width(), player.swapchain(1).height(), colour_format_name(player.format()));
                 if (s.frames > 0 && !s.pass_ms_sum.empty()) {
                     std::string passes;
                     for (const auto& [pass, ms] : s.pass_ms_sum) passes += fmt::format(" {} {:.2f} ms,", pass, ms / s.frames);

@@ -54,6 +54,15 @@ void destroy_swapchain_images(Swapchain& sc) {
     sc.memory.clear();
 }
 
+// Down to STOPPING the way the specification's state diagram goes: FOCUSED, VISIBLE,
+// SYNCHRONIZED, STOPPING, each an event of its own.
+void walk_down_to_stopping(Session& s) {
+    if (s.state == XR_SESSION_STATE_STOPPING) return;
+    if (s.state == XR_SESSION_STATE_FOCUSED) push_state(s, XR_SESSION_STATE_VISIBLE);
+    if (s.state == XR_SESSION_STATE_VISIBLE) push_state(s, XR_SESSION_STATE_SYNCHRONIZED);
+    push_state(s, XR_SESSION_STATE_STOPPING);
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL CreateSession(XrInstance handle, const XrSessionCreateInfo* info, XrSession* out) {
     Instance* inst = instance(handle);
     if (!inst) return XR_ERROR_HANDLE_INVALID;
@@ -115,6 +124,8 @@ XRAPI_ATTR XrResult XRAPI_CALL BeginSession(XrSession handle, const XrSessionBeg
     s->begin_time = inst->clock;
     s->next_display_time = inst->clock + 2 * kPeriodNs;
     push_state(*s, XR_SESSION_STATE_SYNCHRONIZED);
+    // stop@0: the user quits while the application starts; the session never becomes visible.
+    if (inst->script.stop_at == 0) walk_down_to_stopping(*s);
     return XR_SUCCESS;
 }
 
@@ -139,7 +150,7 @@ XRAPI_ATTR XrResult XRAPI_CALL RequestExitSession(XrSession handle) {
     if (!s->running) return XR_ERROR_SESSION_NOT_RUNNING;
     s->exit_requested = true;
     live_instance()->report.exit_requested = true;
-    push_state(*s, XR_SESSION_STATE_STOPPING);
+    walk_down_to_stopping(*s);
     return XR_SUCCESS;
 }
 
@@ -403,7 +414,7 @@ void inspect(Session& s, const XrFrameEndInfo& info) {
         if (r.offset.x != 0 || r.offset.y != 0 || r.extent.width != static_cast<std::int32_t>(sc->width) ||
             r.extent.height != static_cast<std::int32_t>(sc->height))
             fail(std::string(name) + " eye: the image rectangle does not cover the swapchain image");
-        if (sc->width != inst->recommended_width || sc->height != inst->recommended_height)
+        if (sc->width != inst->recommended_width[eye] || sc->height != inst->recommended_height[eye])
             fail(std::string(name) + " eye: the swapchain is not the recommended size");
         if (!is_colour_format(sc->format)) fail(std::string(name) + " eye: unexpected format");
         Space* sp = space(projection->space);
@@ -448,7 +459,7 @@ XRAPI_ATTR XrResult XRAPI_CALL EndFrame(XrSession handle, const XrFrameEndInfo* 
     Instance* inst = live_instance();
     inspect(*s, *info);
     int ended = ++inst->report.frames_ended;
-    if (ended == inst->script.stop_at && s->state != XR_SESSION_STATE_STOPPING) push_state(*s, XR_SESSION_STATE_STOPPING);
+    if (ended == inst->script.stop_at) walk_down_to_stopping(*s);
     if (ended == inst->script.loss_at) {
         s->lost = true;
         push_state(*s, XR_SESSION_STATE_LOSS_PENDING);
