@@ -1,5 +1,6 @@
 # Runs `fgplay xr` against the test OpenXR runtime (or against none) and checks the exit code,
 # what fgplay prints, and the runtime's report of the frames it received.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(report ${WORK}/report.json)
@@ -159,6 +160,7 @@ if(CASE MATCHES "^without_a_runtime")
   if(NOT err MATCHES "no OpenXR runtime is available \\(XR_ERROR_RUNTIME_UNAVAILABLE\\)" OR NOT err MATCHES "fgplay view")
     message(FATAL_ERROR "the message does not name the missing runtime and suggest fgplay view")
   endif()
+  fg_test_passed()
   return()
 endif()
 
@@ -166,6 +168,7 @@ if(CASE MATCHES "^a_bad_trade_off_file")
   if(NOT err MATCHES "--trade-offs .*bad_bench.json:/rows/1/settings/stereo: expected reproject, per-eye or naive")
     message(FATAL_ERROR "the error does not name the bad entry")
   endif()
+  fg_test_passed()
   return()
 endif()
 
@@ -313,3 +316,4 @@ else()
     message(FATAL_ERROR "the session did not go through ready, focused, stopping, idle, exiting: ${states}")
   endif()
 endif()
+fg_test_passed()
