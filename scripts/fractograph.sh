@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One entry point for setting up, building and running Fractograph on Debian 12.
 #   bash scripts/fractograph.sh demo   install, build, compile a gallery graph, render a stereo frame
-#   bash scripts/fractograph.sh test   install, build, run every test (and the fuzzers briefly)
+#   bash scripts/fractograph.sh test   install, build, run every test; each fuzzer for a minute
+#                                      (scripts/fuzz.sh SECONDS for long runs)
 #   bash scripts/fractograph.sh build  install and build only
 # Idempotent: packages already installed are not touched, and a built tree only rebuilds what changed.
 set -euo pipefail
@@ -88,22 +89,10 @@ demo() {
   fi
 }
 
+# The fuzzers for a minute each (scripts/fuzz.sh; run it alone for long runs).
 run_fuzzers() {
-  local fuzz=$BUILD-fuzz seconds=${FG_FUZZ_SECONDS:-30}
-  if [ ! -f "$fuzz/build.ninja" ]; then
-    CC=clang CXX=clang++ cmake -S "$ROOT" -B "$fuzz" -G Ninja -DFG_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-  fi
-  run_logged "$fuzz/build.log" cmake --build "$fuzz" -j "$JOBS"
-  for target in fuzz_graph_loader fuzz_pack_reader; do
-    say "fuzzing $target for ${seconds}s"
-    local corpus=$fuzz/corpus/$target
-    mkdir -p "$corpus"
-    if ! "$fuzz/tests/fuzz/$target" -max_total_time="$seconds" -print_final_stats=1 -close_fd_mask=3 \
-        "$corpus" "$ROOT/tests/fuzz/corpus/${target#fuzz_}" >"$fuzz/$target.log" 2>&1; then
-      tail -40 "$fuzz/$target.log"; echo "$target found a crash"; exit 1
-    fi
-    grep -E '^stat::number_of_executed_units' "$fuzz/$target.log" || true
-  done
+  say "building and running the fuzzers for ${FG_FUZZ_SECONDS:-60}s each"
+  bash "$ROOT/scripts/fuzz.sh" "${FG_FUZZ_SECONDS:-60}"
 }
 
 test_all() {

@@ -1,4 +1,5 @@
 # A mistyped command or option is named, with the nearest one it could have meant, in both tools.
+include(${CMAKE_CURRENT_LIST_DIR}/support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(WRITE ${WORK}/scene.json "{}")
@@ -27,4 +28,4 @@ expect_suggestion("^fgplay xr: unknown option \"--validaton\"; did you mean \"--
                   ${FGPLAY} xr ${WORK}/scene.fgpack --validaton)
 expect_suggestion("^fgplay render: unknown option \"--zzz\" \\(fgplay render --help lists the options\\)"
                   ${FGPLAY} render ${WORK}/scene.fgpack --zzz)
-file(REMOVE_RECURSE ${WORK})
+fg_test_passed()

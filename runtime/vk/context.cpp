@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "vk/device_features.h"
 #include "vk/device_selection.h"
 #include "vk/log.h"
 #include "vk/vulkan_error.h"
@@ -257,41 +258,21 @@ void Context::select_physical_device(const ContextOptions& options) {
 }
 
 void Context::create_device(const ContextOptions& options) {
-    VkPhysicalDeviceVulkan13Features supported13{};
-    supported13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
-    VkPhysicalDeviceVulkan12Features supported12{};
-    supported12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
-    supported12.pNext = &supported13;
-    VkPhysicalDeviceFeatures2 supported{};
-    supported.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
-    supported.pNext = &supported12;
-    vkGetPhysicalDeviceFeatures2(physical_, &supported);
-
-    host_query_reset_ = supported12.hostQueryReset == VK_TRUE;
-    shader_float64_ = options.shader_float64 && supported.features.shaderFloat64 == VK_TRUE;
-    shader_int64_ = options.shader_int64 && supported.features.shaderInt64 == VK_TRUE;
+    const EnabledFeatures supported = supported_features(physical_);
+    host_query_reset_ = supported.host_query_reset;
+    shader_float64_ = options.shader_float64 && supported.shader_float64;
+    shader_int64_ = options.shader_int64 && supported.shader_int64;
     if (options.shader_float64 && !shader_float64_)
         logger().warn("{} does not support shaderFloat64; double precision stays off", properties_.deviceName);
     if (options.shader_int64 && !shader_int64_)
         logger().warn("{} does not support shaderInt64; 64-bit integers stay off", properties_.deviceName);
 
-    // Everything not named here stays off, so a shader that relies on an unrequested feature is
-    // caught by validation on the development machine, not on a user's GPU.
-    VkPhysicalDeviceVulkan13Features enabled13{};
-    enabled13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
-    enabled13.synchronization2 = VK_TRUE;
-    // Core in 1.3 and always supported there, but it must be enabled: SPIR-V 1.6 (what
-    // glslang emits for --target-env vulkan1.3) declares workgroup sizes with LocalSizeId.
-    enabled13.maintenance4 = supported13.maintenance4;
-    VkPhysicalDeviceVulkan12Features enabled12{};
-    enabled12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
-    enabled12.pNext = &enabled13;
-    enabled12.hostQueryReset = host_query_reset_ ? VK_TRUE : VK_FALSE;
-    VkPhysicalDeviceFeatures2 enabled{};
-    enabled.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
-    enabled.pNext = &enabled12;
-    enabled.features.shaderFloat64 = shader_float64_ ? VK_TRUE : VK_FALSE;
-    enabled.features.shaderInt64 = shader_int64_ ? VK_TRUE : VK_FALSE;
+    EnabledFeatures wanted;
+    wanted.host_query_reset = host_query_reset_;
+    wanted.shader_float64 = shader_float64_;
+    wanted.shader_int64 = shader_int64_;
+    wanted.maintenance4 = supported.maintenance4;
+    const DeviceFeatureChain features(wanted);
 
     std::vector<const char*> extensions;
     // A portability driver must have its subset extension enabled by whoever uses it.
@@ -307,7 +288,8 @@ void Context::create_device(const ContextOptions& options) {
 
     VkDeviceCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
-    info.pNext = &enabled;
+    info.pNext = features.next();
+    info.pEnabledFeatures = features.core();
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue_info;
     info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());

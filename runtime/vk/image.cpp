@@ -36,6 +36,39 @@ const char* format_name(VkFormat format) {
     }
 }
 
+BoundImage create_bound_image(const Context& ctx, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage) {
+    VkImageCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    BoundImage bound;
+    check(vkCreateImage(ctx.device(), &info, nullptr, &bound.image), "vkCreateImage");
+    try {
+        VkMemoryRequirements requirements{};
+        vkGetImageMemoryRequirements(ctx.device(), bound.image, &requirements);
+        VkMemoryAllocateInfo allocate{};
+        allocate.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+        allocate.allocationSize = requirements.size;
+        allocate.memoryTypeIndex =
+            select_memory_type(ctx.memory_properties(), requirements.memoryTypeBits, MemoryKind::DeviceLocal);
+        check(vkAllocateMemory(ctx.device(), &allocate, nullptr, &bound.memory), "vkAllocateMemory");
+        check(vkBindImageMemory(ctx.device(), bound.image, bound.memory, 0), "vkBindImageMemory");
+    } catch (...) {
+        vkDestroyImage(ctx.device(), bound.image, nullptr);
+        if (bound.memory) vkFreeMemory(ctx.device(), bound.memory, nullptr);
+        throw;
+    }
+    return bound;
+}
+
 StorageImage::StorageImage(const Context& ctx, VkFormat format, VkExtent2D extent)
     : ctx_(&ctx), format_(format), extent_(extent) {
     fg::vk::bytes_per_pixel(format);  // rejects formats outside the list early
@@ -50,31 +83,10 @@ StorageImage::StorageImage(const Context& ctx, VkFormat format, VkExtent2D exten
         throw VulkanError(VK_ERROR_FORMAT_NOT_SUPPORTED,
                           fmt::format("{} cannot use {} as a storage image", ctx.device_name(), format_name(format)));
 
-    VkImageCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent.width, extent.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = kUsage;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    check(vkCreateImage(ctx.device(), &info, nullptr, &image_), "vkCreateImage");
-
+    const BoundImage bound = create_bound_image(ctx, format, extent, kUsage);
+    image_ = bound.image;
+    memory_ = bound.memory;
     try {
-        VkMemoryRequirements requirements{};
-        vkGetImageMemoryRequirements(ctx.device(), image_, &requirements);
-        VkMemoryAllocateInfo allocate{};
-        allocate.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-        allocate.allocationSize = requirements.size;
-        allocate.memoryTypeIndex =
-            select_memory_type(ctx.memory_properties(), requirements.memoryTypeBits, MemoryKind::DeviceLocal);
-        check(vkAllocateMemory(ctx.device(), &allocate, nullptr, &memory_), "vkAllocateMemory");
-        check(vkBindImageMemory(ctx.device(), image_, memory_, 0), "vkBindImageMemory");
-
         VkImageViewCreateInfo view_info{};
         view_info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
         view_info.image = image_;

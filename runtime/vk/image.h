@@ -18,6 +18,14 @@ class Context;
 std::uint32_t bytes_per_pixel(VkFormat format);
 const char* format_name(VkFormat format);
 
+// A 2D, single-level, optimally tiled colour image of `usage` in device-local memory, bound to it;
+// on failure nothing is left behind. StorageImage and TransferImage each hold one.
+struct BoundImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+};
+BoundImage create_bound_image(const Context& ctx, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage);
+
 class StorageImage {
 public:
     static constexpr VkImageUsageFlags kUsage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |

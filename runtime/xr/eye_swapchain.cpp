@@ -4,15 +4,27 @@
 #include <fmt/format.h>
 
 #include "vk/commands.h"
+#include "xr/swapchain_colour.h"
 #include "xr/xr_error.h"
 
 namespace fg::xr {
 
-std::int64_t choose_swapchain_format(const std::vector<std::int64_t>& offered) {
-    for (VkFormat f : {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB})
-        if (std::find(offered.begin(), offered.end(), static_cast<std::int64_t>(f)) != offered.end()) return f;
+VkFormat choose_eye_swapchain_format(const vk::Context& ctx, const std::vector<std::int64_t>& offered) {
+    auto writable = [&](VkFormat f) {
+        VkFormatProperties support{};
+        vkGetPhysicalDeviceFormatProperties(ctx.physical(), f, &support);
+        const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_TRANSFER_DST_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+        return (support.optimalTilingFeatures & needed) == needed;
+    };
+    if (auto chosen = choose_colour_swapchain_format(offered, writable)) {
+        if (is_8bit_linear_format(*chosen))
+            fmt::print("colour: the runtime offers no sRGB or deep swapchain format; {} holds linear values, so dark tones band\n",
+                       colour_format_name(*chosen));
+        return *chosen;
+    }
     throw XrError(XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED,
-                  "the OpenXR runtime offers no 8-bit RGBA swapchain format (R8G8B8A8 or B8G8R8A8, UNORM or SRGB)");
+                  "the OpenXR runtime offers no colour swapchain format fgplay can write (8-bit RGBA or BGRA, sRGB or UNORM; "
+                  "R16G16B16A16 SFLOAT or UNORM; A2B10G10R10_UNORM)");
 }
 
 XrSwapchain create_vulkan_swapchain(XrSession session, XrSwapchainUsageFlags usage, std::int64_t format, std::uint32_t width,
@@ -38,8 +50,8 @@ XrSwapchain create_vulkan_swapchain(XrSession session, XrSwapchainUsageFlags usa
     return swapchain;
 }
 
-EyeSwapchain::EyeSwapchain(XrSession session, std::int64_t format, std::uint32_t width, std::uint32_t height)
-    : width_(width), height_(height) {
+EyeSwapchain::EyeSwapchain(XrSession session, VkFormat format, std::uint32_t width, std::uint32_t height)
+    : format_(format), width_(width), height_(height) {
     swapchain_ = create_vulkan_swapchain(session, XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT,
                                          format, width, height, images_, "xrCreateSwapchain");
 }
@@ -58,6 +70,13 @@ void EyeSwapchain::present(const vk::Context& ctx, vk::StorageImage& source) {
     if (index >= images_.size())
         throw XrError(XR_ERROR_RUNTIME_FAILURE, fmt::format("the runtime acquired swapchain image {} of {}", index, images_.size()));
 
+    const VkExtent2D from = source.extent();
+    // The final image's bytes are sRGB-encoded already: an R8G8B8A8_SRGB image of the same size
+    // takes them as they are.
+    const bool copy_as_they_are = format_ == VK_FORMAT_R8G8B8A8_SRGB && from.width == width_ && from.height == height_;
+    if (!copy_as_they_are && (!encoded_ || encoded_->extent().width != from.width || encoded_->extent().height != from.height))
+        encoded_ = std::make_unique<vk::TransferImage>(ctx, VK_FORMAT_R8G8B8A8_SRGB, from);
+
     VkImage target = images_[index];
     vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
         // The frame graph wrote `source` in compute; the runtime hands images over in
@@ -66,14 +85,26 @@ void EyeSwapchain::present(const vk::Context& ctx, vk::StorageImage& source) {
         vk::image_layout_barrier(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                  {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
                                  vk::access::transfer_write);
-        VkImageBlit region{};
-        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.srcOffsets[1] = {static_cast<std::int32_t>(source.extent().width),
-                                static_cast<std::int32_t>(source.extent().height), 1};
-        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.dstOffsets[1] = {static_cast<std::int32_t>(width_), static_cast<std::int32_t>(height_), 1};
-        vkCmdBlitImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region,
-                       VK_FILTER_LINEAR);
+        VkImageCopy copy{};
+        copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.extent = {from.width, from.height, 1};
+        if (copy_as_they_are) {
+            vkCmdCopyImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &copy);
+        } else {
+            encoded_->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, vk::access::transfer_read, vk::access::transfer_write);
+            vkCmdCopyImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, encoded_->handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+            encoded_->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, vk::access::transfer_write, vk::access::transfer_read);
+            VkImageBlit region{};
+            region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.srcOffsets[1] = {static_cast<std::int32_t>(from.width), static_cast<std::int32_t>(from.height), 1};
+            region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.dstOffsets[1] = {static_cast<std::int32_t>(width_), static_cast<std::int32_t>(height_), 1};
+            vkCmdBlitImage(cmd, encoded_->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region, VK_FILTER_LINEAR);
+        }
         vk::image_layout_barrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                  vk::access::transfer_write,
                                  {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});

@@ -1,19 +1,25 @@
 #pragma once
-// One eye's OpenXR swapchain: fgplay renders into its own storage image (the frame graph's
-// final.<eye>) and blits it into the acquired swapchain image, scaling when the render
-// resolution differs from the swapchain's.
+// One eye's OpenXR colour swapchain: fgplay renders into its own storage image (the frame graph's
+// final.<eye>, display-encoded sRGB bytes in an R8G8B8A8_UNORM image) and hands it over so that
+// the headset shows what the PNG shows (swapchain_colour.h):
+//   - into R8G8B8A8_SRGB of the same size, the bytes are copied as they are;
+//   - otherwise they are copied into an R8G8B8A8_SRGB image of the render size, which says what
+//     they are, and blitted from there: the blit decodes them, filters in linear light when the
+//     sizes differ, and encodes for an sRGB swapchain or stores linear values in a linear one.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "vk/context.h"
 #include "vk/image.h"
+#include "vk/transfer_image.h"
 #include "xr/xr_instance.h"
 
 namespace fg::xr {
 
-// The swapchain format fgplay picks from the runtime's list: 8-bit RGBA, UNORM first because the
-// frame graph's final image already holds display values.
-std::int64_t choose_swapchain_format(const std::vector<std::int64_t>& offered);
+// The colour format fgplay asks for (swapchain_colour.h), among those the runtime offers and
+// the device can copy and blit into; throws XrError when there is none.
+VkFormat choose_eye_swapchain_format(const vk::Context& ctx, const std::vector<std::int64_t>& offered);
 
 // A single-image, single-layer Vulkan swapchain of `usage` (colour or depth) and its images.
 XrSwapchain create_vulkan_swapchain(XrSession session, XrSwapchainUsageFlags usage, std::int64_t format, std::uint32_t width,
@@ -21,22 +27,25 @@ XrSwapchain create_vulkan_swapchain(XrSession session, XrSwapchainUsageFlags usa
 
 class EyeSwapchain {
 public:
-    EyeSwapchain(XrSession session, std::int64_t format, std::uint32_t width, std::uint32_t height);
+    EyeSwapchain(XrSession session, VkFormat format, std::uint32_t width, std::uint32_t height);
     ~EyeSwapchain();
     EyeSwapchain(const EyeSwapchain&) = delete;
     EyeSwapchain& operator=(const EyeSwapchain&) = delete;
 
-    // Acquire, wait, blit `source` (written by compute, left in GENERAL) and release.
+    // Acquire, wait, copy or blit `source` (written by compute, left in GENERAL) and release.
     void present(const vk::Context& ctx, vk::StorageImage& source);
 
     XrSwapchain handle() const { return swapchain_; }
     std::uint32_t width() const { return width_; }
     std::uint32_t height() const { return height_; }
+    VkFormat format() const { return format_; }
 
 private:
     XrSwapchain swapchain_ = XR_NULL_HANDLE;
     std::vector<VkImage> images_;
+    VkFormat format_;
     std::uint32_t width_ = 0, height_ = 0;
+    std::unique_ptr<vk::TransferImage> encoded_;   // the final image's bytes labelled sRGB, for the blit
 };
 
 }  // namespace fg::xr

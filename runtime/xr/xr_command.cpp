@@ -32,6 +32,9 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");
+    c.command->add_option("--record", c.options.record,
+                          "write each submitted frame's eyes to DIR/left_NNNNNN.png and right_NNNNNN.png (the PNGs "
+                          "fgplay render writes)");
 }
 
 int XrCommand::run() {

@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "frame/frame_executor.h"
+#include "frame/image_output.h"
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
 #include "locomotion/viewer_step.h"
@@ -18,6 +20,7 @@
 #include "xr/controller_actions.h"
 #include "xr/depth_layer.h"
 #include "xr/eye_swapchain.h"
+#include "xr/swapchain_colour.h"
 #include "frame/frame_governor.h"
 #include "frame/trade_off_ladder.h"
 #include "xr/visibility_mask.h"
@@ -80,13 +83,15 @@ public:
         check(xrEnumerateSwapchainFormats(session_, 0, &count, nullptr), "xrEnumerateSwapchainFormats");
         std::vector<std::int64_t> formats(count);
         check(xrEnumerateSwapchainFormats(session_, count, &count, formats.data()), "xrEnumerateSwapchainFormats");
-        format_ = choose_swapchain_format(formats);
+        format_ = choose_eye_swapchain_format(ctx, formats);
+        // Each eye's swapchains at its own recommended size (a runtime may recommend different
+        // ones); the frame graph renders both eyes at the larger, and each is scaled into its own.
         for (int eye = 0; eye < 2; ++eye)
             swapchains_[eye] = std::make_unique<EyeSwapchain>(session_, format_, views[eye].recommendedImageRectWidth,
                                                               views[eye].recommendedImageRectHeight);
-        make_depth_swapchains(formats, views[0].recommendedImageRectWidth, views[0].recommendedImageRectHeight);
-        base_width_ = o.width ? o.width : views[0].recommendedImageRectWidth;
-        base_height_ = o.height ? o.height : views[0].recommendedImageRectHeight;
+        make_depth_swapchains(formats, views);
+        base_width_ = o.width ? o.width : std::max(views[0].recommendedImageRectWidth, views[1].recommendedImageRectWidth);
+        base_height_ = o.height ? o.height : std::max(views[0].recommendedImageRectHeight, views[1].recommendedImageRectHeight);
         frame_.width = base_width_;
         frame_.height = base_height_;
         governor_ = std::make_unique<FrameGovernor>(o.ladder.empty() ? governor_ladder(pack.manifest) : o.ladder);
@@ -137,7 +142,7 @@ public:
     const PlayStats& stats() const { return stats_; }
     const SessionLifecycle& lifecycle() const { return lifecycle_; }
     const FrameSettings& frame_settings() const { return frame_; }
-    std::int64_t format() const { return format_; }
+    VkFormat format() const { return format_; }
     const EyeSwapchain& swapchain(int eye) const { return *swapchains_[eye]; }
     const VisibilityMask& visibility_mask(int eye) const { return masks_[eye]; }
     const LensEllipse& lens(int eye) const { return lenses_[eye]; }
@@ -307,6 +312,7 @@ private:
         executor_->set_scene(viewer.scene);
         FrameStats fs = executor_->run();
         if (options_.governor) govern(fs, period_ns);
+        if (!options_.record.empty()) record_frame();
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
         const View* rendered[2] = {&sv.left, &sv.right};
@@ -333,6 +339,16 @@ private:
         if (auto it = fs.gpu_ms.find("frame"); it != fs.gpu_ms.end()) stats_.gpu_ms_sum += it->second;
         for (const auto& [pass, ms] : fs.gpu_ms) stats_.pass_ms_sum[pass] += ms;
         return true;
+    }
+
+    // The PNGs `fgplay render` would write for this frame's views: what the headset must show.
+    void record_frame() const {
+        for (const char* eye : {"left", "right"}) {
+            const VkExtent2D size = executor_->image(fmt::format("final.{}", eye)).extent();
+            const auto path = std::filesystem::path(options_.record) / fmt::format("{}_{:06}.png", eye, stats_.frames);
+            if (!write_png(path.string(), rgba8_from_bytes(executor_->download(fmt::format("final.{}", eye)), size.width, size.height)))
+                throw std::runtime_error(fmt::format("--record: cannot write {}", path.string()));
+        }
     }
 
     // Reads this frame's GPU time; a new level takes effect from the next frame (new sizes and
@@ -362,7 +378,7 @@ private:
     }
 
     // XR_KHR_composition_layer_depth where the runtime has it, in a depth format it lists.
-    void make_depth_swapchains(const std::vector<std::int64_t>& formats, std::uint32_t width, std::uint32_t height) {
+    void make_depth_swapchains(const std::vector<std::int64_t>& formats, const std::vector<XrViewConfigurationView>& views) {
         if (!instance_.has_depth_layer()) {
             fmt::print("depth layer: the runtime has no XR_KHR_composition_layer_depth; no depth is submitted\n");
             return;
@@ -375,10 +391,14 @@ private:
         // The projection's far plane is the march's far limit: every hit is nearer, the sky is there.
         depth_projection_.far_m = static_cast<float>(scene_.max_distance / scene_.world_scale);
         depth_projection_.near_m = std::min(0.05f, 0.01f * depth_projection_.far_m);
-        for (int eye = 0; eye < 2; ++eye) depth_[eye] = std::make_unique<DepthSwapchain>(ctx_, session_, *format, width, height);
-        fmt::print("depth layer: XR_KHR_composition_layer_depth, {} {}x{} per eye, near {:g} m, far {:g} m\n",
-                   *format == VK_FORMAT_D32_SFLOAT ? "D32_SFLOAT" : "D16_UNORM", width, height, depth_projection_.near_m,
-                   depth_projection_.far_m);
+        // The same size as the eye's colour swapchain.
+        for (int eye = 0; eye < 2; ++eye)
+            depth_[eye] = std::make_unique<DepthSwapchain>(ctx_, session_, *format, views[eye].recommendedImageRectWidth,
+                                                           views[eye].recommendedImageRectHeight);
+        fmt::print("depth layer: XR_KHR_composition_layer_depth, {} {}x{} and {}x{}, near {:g} m, far {:g} m\n",
+                   *format == VK_FORMAT_D32_SFLOAT ? "D32_SFLOAT" : "D16_UNORM", views[0].recommendedImageRectWidth,
+                   views[0].recommendedImageRectHeight, views[1].recommendedImageRectWidth, views[1].recommendedImageRectHeight,
+                   depth_projection_.near_m, depth_projection_.far_m);
     }
 
     void update_lens_masks(const StereoViews& sv) {
@@ -415,7 +435,7 @@ private:
     HeadPose origin_;
     XrSession session_ = XR_NULL_HANDLE;
     XrSpace space_ = XR_NULL_HANDLE;
-    std::int64_t format_ = 0;
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
     std::unique_ptr<EyeSwapchain> swapchains_[2];
     std::unique_ptr<DepthSwapchain> depth_[2];
     XrCompositionLayerDepthInfoKHR depth_info_[2] = {{XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR}, {XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR}};
@@ -463,6 +483,7 @@ int play_xr(const XrPlayOptions& o) {
         fmt::print("governor: the fixed ladder (no --trade-offs)\n");
     }
     try {
+        if (!o.record.empty()) std::filesystem::create_directories(o.record);
         OpenXrInstance instance;
         fmt::print("OpenXR runtime: {}, system: {}\n", instance.runtime_name(), instance.system_name());
         vk::ContextOptions co;
@@ -481,9 +502,9 @@ int play_xr(const XrPlayOptions& o) {
                 rc = player.run();
                 const auto& s = player.stats();
                 const auto& f = player.frame_settings();
-                fmt::print("frames: {} ({} stereo, render {}x{} per eye, swapchains {}x{} format {})\n", s.frames,
-                           stereo_mode_name(f.stereo), f.width, f.height, player.swapchain(0).width(),
-                           player.swapchain(0).height(), vk::format_name(static_cast<VkFormat>(player.format())));
+                fmt::print("frames: {} ({} stereo, render {}x{} per eye, swapchains {}x{} and {}x{} format {})\n", s.frames,
+                           stereo_mode_name(f.stereo), f.width, f.height, player.swapchain(0).width(), player.swapchain(0).height(),
+                           player.swapchain(1).width(), player.swapchain(1).height(), colour_format_name(player.format()));
                 if (s.frames > 0 && !s.pass_ms_sum.empty()) {
                     std::string passes;
                     for (const auto& [pass, ms] : s.pass_ms_sum) passes += fmt::format(" {} {:.2f} ms,", pass, ms / s.frames);

@@ -31,6 +31,7 @@ struct XrPlayOptions {
     bool controllers = true;             // controller input through OpenXR actions
     double controller_speed = 1.0;       // the trigger's full pull, as a throttle
     bool wrap = true;                    // wrap the head by whole periods in looping scenes
+    std::string record;                  // folder: each submitted frame's eyes as PNG, as fgplay render writes them
 };
 
 // Exit codes: 0 clean, 1 error (no runtime, validation errors, ...), 2 the session was lost.

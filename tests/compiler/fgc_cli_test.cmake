@@ -1,5 +1,6 @@
 # fgc as a user runs it: a broken graph gives a non-zero exit, messages naming the node, and no pack;
 # a good graph gives a pack that `fgc info` reads back.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(WRITE ${WORK}/broken.json [=[{"format": "fractograph-graph", "version": 1,
@@ -28,3 +29,4 @@ execute_process(COMMAND ${FGC} info ${WORK}/not_a_pack.fgpack RESULT_VARIABLE rc
 if(rc EQUAL 0 OR NOT err MATCHES "byte 0: not a Fractograph pack")
   message(FATAL_ERROR "fgc info accepted a bad pack: ${err}")
 endif()
+fg_test_passed()

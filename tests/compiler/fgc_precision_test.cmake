@@ -1,5 +1,6 @@
 # fgc compile --precision: double is recorded in the pack and shown by fgc info; the option
 # overrides the graph's scene.precision either way; anything else is refused before compiling.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${FGC} compile ${SOURCE}/graphs/gallery/mandelbulb.json --precision double -o ${WORK}/double.fgpack
@@ -21,3 +22,4 @@ execute_process(COMMAND ${FGC} compile ${SOURCE}/graphs/gallery/mandelbulb.json 
 if(rc EQUAL 0 OR EXISTS ${WORK}/quad.fgpack)
   message(FATAL_ERROR "fgc compile accepted --precision quad")
 endif()
+fg_test_passed()

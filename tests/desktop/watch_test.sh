@@ -11,7 +11,12 @@ export MESA_SHADER_CACHE_DIR=$WORK/mesa_cache
 runner=$!
 for _ in $(seq 100); do [ -s "$WORK/pid" ] && break; sleep 0.1; done
 pid=$(cat "$WORK/pid")
-finish() { kill "$pid" 2>/dev/null; wait "$runner" 2>/dev/null; cat "$WORK/log"; exit "$1"; }
+# A passing test removes its folder (FG_KEEP_TEST_FILES=1 keeps it); a failing one leaves it to look at.
+finish() {
+  kill "$pid" 2>/dev/null; wait "$runner" 2>/dev/null; cat "$WORK/log"
+  [ "$1" -eq 0 ] && [ "${FG_KEEP_TEST_FILES:-}" != 1 ] && rm -rf "$WORK"
+  exit "$1"
+}
 wait_for() {
   for _ in $(seq 1200); do
     grep -q "$1" "$WORK/log" && return 0

@@ -26,7 +26,7 @@
 
 #include <stb/stb_image_write.h>
 
-#include "../support/scratch_dir.h"
+#include "scratch_dir.h"
 #include "frame/aov_images.h"
 #include "frame/cpu_reference_tracer.h"
 #include "offline/frame_record.h"

@@ -1,6 +1,7 @@
 # fgplay as a user runs it: a bad pack is refused with the byte it broke at, a good one renders
 # both eyes with only the passes asked for, and `fgplay bench --quick` writes its table, CSV and
 # plots and ends on the summary line.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(ENV{MESA_SHADER_CACHE_DISABLE} true)
@@ -82,3 +83,4 @@ list(LENGTH rows n)
 if(n LESS 10)
   message(FATAL_ERROR "fgplay bench wrote ${n} CSV lines")
 endif()
+fg_test_passed()

@@ -1,6 +1,7 @@
 # `fgplay bench --sequence --quick` as CI runs it: a row for every trace and setting with finite
 # figures, the tables and plots beside them, and per-eye conemarch no more than 0.5 percentage
 # points of misclassified pixels worse than naive sphere tracing on the same trace.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 cmake_policy(SET CMP0007 NEW)   # empty CSV cells (lanes not counted yet) keep their place in a list
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -106,3 +107,4 @@ file(READ ${WORK}/seq/sequence.md table)
 if(NOT table MATCHES "Per-eye conemarch against naive")
   message(FATAL_ERROR "sequence.md has no headline table:\n${table}")
 endif()
+fg_test_passed()

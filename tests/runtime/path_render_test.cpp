@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 
 #include "offline/frame_record.h"
 #include "offline/path_render.h"
@@ -15,6 +16,7 @@
 #include "offline/supersample.h"
 #include "offline_scene.h"
 #include "runtime_test_support.h"
+#include "scratch_dir.h"
 
 using namespace fg;
 using fg::test::RuntimeTest;
@@ -30,10 +32,8 @@ class PathRender : public RuntimeTest {
 protected:
     void SetUp() override {
         RuntimeTest::SetUp();
-        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        std::replace(name.begin(), name.end(), '/', '_');
-        dir_ = std::filesystem::path(::testing::TempDir()) / ("fg_path_" + name);
-        std::filesystem::remove_all(dir_);
+        scratch_ = std::make_unique<test::ScratchDir>("fg_path");
+        dir_ = scratch_->path();
         Diagnostics diag;
         // Four frames at 3 fps over one second: a move forward, a turn to look at the ball, a zoom.
         auto json = nlohmann::json::parse(test::read_source_file("tests/runtime/data/short_path.json"));
@@ -44,7 +44,7 @@ protected:
         settings_.height = 32;
     }
     void TearDown() override {
-        std::filesystem::remove_all(dir_);
+        scratch_.reset();
         RuntimeTest::TearDown();
     }
     PathRunResult run(const Pack& pack, const std::string& sub, FrameRange frames, bool resume = false) {
@@ -52,6 +52,7 @@ protected:
         return run_path(renderer, {(dir_ / sub).string(), frames, "test job", resume, false});
     }
 
+    std::unique_ptr<test::ScratchDir> scratch_;
     std::filesystem::path dir_;
     std::optional<CameraPath> path_;
     PathRenderSettings settings_;

@@ -2,6 +2,7 @@
 # array without Slurm, writes exactly the files one whole-range `fgplay render --path` writes; a
 # task run again renders nothing (--resume), and a deleted frame is rendered again.
 # Inputs: FGC, FGPLAY, SOURCE, WORK.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${FGC} compile ${SOURCE}/tests/runtime/data/panorama_room.json -o ${WORK}/room.fgpack
@@ -54,3 +55,4 @@ array_task(1 out)
 if(NOT out MATCHES "rendered 1 frames, skipped 1 already done")
   message(FATAL_ERROR "re-running a task should render only the deleted frame:\n${out}")
 endif()
+fg_test_passed()

@@ -63,7 +63,9 @@ unshare --pid --fork --kill-child --mount-proc bash -c "
   slurmd -D -f $WORK/slurm.conf -N $NODE >$WORK/log/slurmd.out 2>&1 &
   wait" &
 CLUSTER=$!
-trap 'kill -KILL $CLUSTER 2>/dev/null || true; wait $CLUSTER 2>/dev/null || true' EXIT
+# The cluster dies with the script; a passing run then removes its folder (FG_KEEP_TEST_FILES=1 keeps it).
+trap 'rc=$?; kill -KILL $CLUSTER 2>/dev/null || true; wait $CLUSTER 2>/dev/null || true
+      [ $rc -eq 0 ] && [ "${FG_KEEP_TEST_FILES:-}" != 1 ] && rm -rf "$WORK"; exit $rc' EXIT
 
 for _ in $(seq 1 120); do
   [ "$(sinfo -h -o %t 2>/dev/null | head -1)" = idle ] && break

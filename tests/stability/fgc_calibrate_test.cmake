@@ -1,5 +1,6 @@
 # fgc calibrate on a copy of GRAPH: --dry-run leaves the file alone; a real run writes a bias into
 # it, and the result still passes `fgc check`.
+include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(copy ${WORK}/graph.json)
@@ -35,3 +36,4 @@ execute_process(COMMAND ${FGC} check ${copy} RESULT_VARIABLE rc OUTPUT_VARIABLE 
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the calibrated graph no longer checks:\n${out}\n${err}")
 endif()
+fg_test_passed()

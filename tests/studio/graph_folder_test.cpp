@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_dir.h"
 #include "studio/graph_folder.h"
 
 namespace fg::studio {
@@ -12,16 +13,14 @@ namespace fs = std::filesystem;
 class GraphFolderTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        base = fs::temp_directory_path() / ("fg_studio_folder_" + std::to_string(::getpid()));
-        fs::remove_all(base);
         fs::create_directories(base / "work" / "sub");
         std::ofstream(base / "work" / "a.json") << "{}";
         std::ofstream(base / "work" / "sub" / "b.json") << "{}";
         std::ofstream(base / "secret.json") << "{\"secret\": 1}";
         fs::create_symlink(base / "secret.json", base / "work" / "link.json");
     }
-    void TearDown() override { fs::remove_all(base); }
-    fs::path base;
+    fg::test::ScratchDir scratch{"fg_studio_folder"};
+    fs::path base = scratch.path();
 };
 
 TEST_F(GraphFolderTest, ReadsAndWritesInsideTheFolder) {

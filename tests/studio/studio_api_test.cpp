@@ -11,6 +11,7 @@
 #include <httplib.h>
 
 #include "javascript_json.h"
+#include "scratch_dir.h"
 #include "studio/studio_server.h"
 #include "tool/command_outcome.h"
 
@@ -31,8 +32,8 @@ std::string read(const fs::path& p) {
 class StudioApiTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        work = fs::temp_directory_path() / ("fg_studio_api_" + std::to_string(::getpid()));
-        fs::remove_all(work);
+        scratch = new fg::test::ScratchDir("fg_studio_api");
+        work = scratch->path();
         fs::create_directories(work / "folder");
         for (const char* name : {"mandelbulb.json", "menger.json"})
             fs::copy_file(fs::path(FG_SOURCE_DIR) / "graphs/gallery" / name, work / "folder" / name);
@@ -58,7 +59,7 @@ protected:
         delete session;
         EXPECT_EQ(ctx->validation_errors(), 0u);
         delete ctx;
-        fs::remove_all(work);
+        delete scratch;
     }
 
     static httplib::Client client() {
@@ -89,6 +90,7 @@ protected:
         return r ? r->body : "";
     }
 
+    static inline fg::test::ScratchDir* scratch = nullptr;
     static inline fs::path work;
     static inline vk::Context* ctx = nullptr;
     static inline StudioSession* session = nullptr;

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "bench_report.h"
+#include "scratch_dir.h"
 #include "frame/trade_off_front.h"
 #include "frame/trade_off_ladder.h"
 
@@ -69,9 +70,21 @@ PackManifest manifest_with_epsilon() {
     return m;
 }
 
-fs::path scratch(const char* name) { return fs::temp_directory_path() / ("fg_trade_offs_" + std::string(name)); }
+// Each test's files in its own temporary folder, removed when the test ends.
+class TradeOffs : public ::testing::Test {
+protected:
+    fs::path scratch(const char* name) const { return dir_ / name; }
+    std::string write_text(const char* name, const std::string& text) const {
+        fs::path p = scratch(name);
+        std::ofstream(p) << text;
+        return p.string();
+    }
 
-TEST(TradeOffs, TheBenchJsonYieldsItsParetoFrontInTimeOrder) {
+private:
+    test::ScratchDir dir_{"fg_trade_offs"};
+};
+
+TEST_F(TradeOffs, TheBenchJsonYieldsItsParetoFrontInTimeOrder) {
     auto front = read_trade_offs(write_bench(scratch("front")));
     std::vector<std::string> names;
     for (const auto& t : front) names.push_back(t.setting);
@@ -86,7 +99,7 @@ TEST(TradeOffs, TheBenchJsonYieldsItsParetoFrontInTimeOrder) {
     EXPECT_EQ(front[3].frame.stereo, StereoMode::Naive);
 }
 
-TEST(TradeOffs, TheBenchWritesTheSameFrontIntoItsJson) {
+TEST_F(TradeOffs, TheBenchWritesTheSameFrontIntoItsJson) {
     std::ifstream in(write_bench(scratch("written")));
     auto j = nlohmann::json::parse(in);
     ASSERT_EQ(j["trade_offs"].size(), 4u);
@@ -94,7 +107,7 @@ TEST(TradeOffs, TheBenchWritesTheSameFrontIntoItsJson) {
     EXPECT_EQ(j["trade_offs"][3]["setting"], "naive");
 }
 
-TEST(TradeOffs, TheGovernorNeverChoosesADominatedSetting) {
+TEST_F(TradeOffs, TheGovernorNeverChoosesADominatedSetting) {
     auto ladder = trade_off_ladder(manifest_with_epsilon(), read_trade_offs(write_bench(scratch("ladder"))));
     ASSERT_EQ(ladder.size(), 4u);
     EXPECT_EQ(ladder.front().name, "naive");   // most accurate first
@@ -118,13 +131,7 @@ std::string error_of(const std::function<void()>& f) {
     return "no error";
 }
 
-std::string write_text(const char* name, const std::string& text) {
-    fs::path p = scratch(name);
-    std::ofstream(p) << text;
-    return p.string();
-}
-
-TEST(TradeOffs, BadFilesAreRefusedNamingTheEntry) {
+TEST_F(TradeOffs, BadFilesAreRefusedNamingTheEntry) {
     std::string good = write_bench(scratch("bad"));
     std::ifstream in(good);
     const auto j = nlohmann::json::parse(in);
@@ -163,7 +170,7 @@ TEST(TradeOffs, BadFilesAreRefusedNamingTheEntry) {
 }
 
 // The committed fixture is real `fgplay bench --quick` output for the gallery Mandelbulb.
-TEST(TradeOffs, TheCommittedQuickBenchYieldsAFrontThatBeatsEveryOtherSetting) {
+TEST_F(TradeOffs, TheCommittedQuickBenchYieldsAFrontThatBeatsEveryOtherSetting) {
     const std::string path = std::string(FG_XR_FIXTURES) + "/mandelbulb_bench_quick.json";
     auto front = read_trade_offs(path);
     ASSERT_GE(front.size(), 2u);

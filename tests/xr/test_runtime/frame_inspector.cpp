@@ -37,9 +37,7 @@ VkImageMemoryBarrier layout_barrier(VkImage image, VkImageLayout from, VkImageLa
 
 double luma(const EyeImage& img, std::size_t i) {
     const std::uint8_t* p = &img.rgba[4 * i];
-    bool bgr = img.format == VK_FORMAT_B8G8R8A8_UNORM || img.format == VK_FORMAT_B8G8R8A8_SRGB;
-    double r = bgr ? p[2] : p[0], g = p[1], b = bgr ? p[0] : p[2];
-    return 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
 }  // namespace
@@ -183,7 +181,7 @@ EyeImage FrameInspector::read(VkImage image, VkFormat format, std::uint32_t widt
     out.width = width;
     out.height = height;
     out.format = format;
-    VkDeviceSize size = static_cast<VkDeviceSize>(width) * height * 4;
+    VkDeviceSize size = static_cast<VkDeviceSize>(width) * height * texel_bytes(format);
     ensure_buffer(size);
     const VkAccessFlags app_writes = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     submit({layout_barrier(image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, app_writes,
@@ -191,8 +189,9 @@ EyeImage FrameInspector::read(VkImage image, VkFormat format, std::uint32_t widt
            image, width, height,
            {layout_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                            VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT)});
-    out.rgba.resize(size);
-    std::memcpy(out.rgba.data(), mapped_, size);
+    out.texels.resize(size);
+    std::memcpy(out.texels.data(), mapped_, size);
+    out.rgba = display_rgba(format, out.texels, static_cast<std::size_t>(width) * height);
     return out;
 }
 
@@ -233,10 +232,7 @@ std::vector<float> FrameInspector::read_depth(VkImage image, VkFormat format, st
 }
 
 void write_eye_png(const std::string& path, const EyeImage& image) {
-    EyeImage rgb = image;
-    if (image.format == VK_FORMAT_B8G8R8A8_UNORM || image.format == VK_FORMAT_B8G8R8A8_SRGB)
-        for (std::size_t i = 0; i + 3 < rgb.rgba.size(); i += 4) std::swap(rgb.rgba[i], rgb.rgba[i + 2]);
-    stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 4, rgb.rgba.data(),
+    stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 4, image.rgba.data(),
                    static_cast<int>(image.width * 4));
 }
 
@@ -245,7 +241,6 @@ ImageDifference compare_with_png(const EyeImage& image, const std::string& png_p
     int w = 0, h = 0, channels = 0;
     stbi_uc* png = stbi_load(png_path.c_str(), &w, &h, &channels, 4);
     if (!png) return d;
-    const bool bgr = image.format == VK_FORMAT_B8G8R8A8_UNORM || image.format == VK_FORMAT_B8G8R8A8_SRGB;
     if (static_cast<std::uint32_t>(w) == image.width && static_cast<std::uint32_t>(h) == image.height &&
         image.rgba.size() == static_cast<std::size_t>(w) * h * 4) {
         std::size_t n = static_cast<std::size_t>(w) * h, differ = 0;
@@ -253,7 +248,7 @@ ImageDifference compare_with_png(const EyeImage& image, const std::string& png_p
         for (std::size_t i = 0; i < n; ++i) {
             int pixel_worst = 0;
             for (int c = 0; c < 3; ++c) {
-                int mine = image.rgba[4 * i + (bgr ? 2 - c : c)];
+                int mine = image.rgba[4 * i + c];
                 pixel_worst = std::max(pixel_worst, std::abs(mine - int(png[4 * i + c])));
             }
             worst = std::max(worst, pixel_worst);
@@ -265,6 +260,19 @@ ImageDifference compare_with_png(const EyeImage& image, const std::string& png_p
     }
     stbi_image_free(png);
     return d;
+}
+
+ColourComparison compare_colour_with_png(const EyeImage& image, const std::string& png_path, double tolerance) {
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* png = stbi_load(png_path.c_str(), &w, &h, &channels, 4);
+    if (!png) return {};
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+    const std::size_t png_pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+    ColourComparison result = static_cast<std::uint32_t>(w) == image.width && static_cast<std::uint32_t>(h) == image.height
+                                  ? compare_colour(image.format, image.texels, png, pixels, tolerance)
+                                  : compare_mean_colour(image.format, image.texels, pixels, png, png_pixels, tolerance);
+    stbi_image_free(png);
+    return result;
 }
 
 }  // namespace fgxrt

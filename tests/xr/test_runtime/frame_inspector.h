@@ -8,12 +8,15 @@
 
 #include <vulkan/vulkan.h>
 
+#include "swapchain_colour.h"
+
 namespace fgxrt {
 
 struct EyeImage {
     std::uint32_t width = 0, height = 0;
     VkFormat format = VK_FORMAT_UNDEFINED;
-    std::vector<std::uint8_t> rgba;   // 4 bytes per pixel as stored (BGRA stays BGRA)
+    std::vector<std::uint8_t> texels;   // as stored, in `format`
+    std::vector<std::uint8_t> rgba;     // what the display shows: the texels decoded as the spec says (swapchain_colour.h), sRGB RGBA8
 };
 
 struct FrameVerdict {
@@ -60,7 +63,7 @@ private:
     void* mapped_ = nullptr;
 };
 
-// An eye image against a PNG of the same size (RGB; BGRA images are swizzled first).
+// What the display shows of an eye image against a PNG of the same size (RGB).
 struct ImageDifference {
     bool compared = false;            // false: no such PNG, or a different size
     double differ_fraction = 1.0;     // pixels with some channel more than 2 levels apart
@@ -68,7 +71,12 @@ struct ImageDifference {
 };
 ImageDifference compare_with_png(const EyeImage& image, const std::string& png_path);
 
-// A PNG of an eye image, for looking at what the runtime received ($FG_XR_TEST_DUMP).
+// The eye, decoded as the spec says for its format, against the PNG fgplay wrote for the same
+// frame (fgplay xr --record): pixel by pixel at the same size, by the mean colour when fgplay
+// rendered at another size and scaled. Not compared: no such PNG.
+ColourComparison compare_colour_with_png(const EyeImage& image, const std::string& png_path, double tolerance);
+
+// A PNG of what the display shows of an eye image ($FG_XR_TEST_DUMP).
 void write_eye_png(const std::string& path, const EyeImage& image);
 
 }  // namespace fgxrt

@@ -1,5 +1,6 @@
 // The test runtime's instance-level calls: extensions, instance, system, views, events, and the
 // XR_KHR_vulkan_enable2 calls that create fgplay's Vulkan instance and device.
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -22,10 +23,32 @@ struct ExtensionSpec {
 constexpr ExtensionSpec kExtensions[] = {{XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME, 2}, {XR_KHR_VISIBILITY_MASK_EXTENSION_NAME, 2},
                                          {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION}};
 
-// FG_XR_TEST_NO_DEPTH_LAYER=1: a runtime without XR_KHR_composition_layer_depth.
-std::size_t offered_extensions() {
-    const char* off = std::getenv("FG_XR_TEST_NO_DEPTH_LAYER");
-    return std::size(kExtensions) - (off && *off == '1' ? 1 : 0);
+bool switched_on(const char* variable) {
+    const char* value = std::getenv(variable);
+    return value && *value == '1';
+}
+
+// FG_XR_TEST_NO_DEPTH_LAYER=1, FG_XR_TEST_NO_VISIBILITY_MASK=1: a runtime without that extension.
+std::vector<ExtensionSpec> offered_extensions() {
+    std::vector<ExtensionSpec> out;
+    for (const auto& e : kExtensions) {
+        const std::string name = e.name;
+        if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME && switched_on("FG_XR_TEST_NO_DEPTH_LAYER")) continue;
+        if (name == XR_KHR_VISIBILITY_MASK_EXTENSION_NAME && switched_on("FG_XR_TEST_NO_VISIBILITY_MASK")) continue;
+        out.push_back(e);
+    }
+    return out;
+}
+
+bool offers(const std::string& name) {
+    const auto offered = offered_extensions();
+    return std::any_of(offered.begin(), offered.end(), [&](const ExtensionSpec& e) { return name == e.name; });
+}
+
+bool chain_has(const void* next, VkStructureType type) {
+    for (auto* s = static_cast<const VkBaseInStructure*>(next); s; s = s->pNext)
+        if (s->sType == type) return true;
+    return false;
 }
 
 template <typename T, typename Fill>
@@ -41,9 +64,10 @@ XrResult two_call(std::uint32_t capacity, std::uint32_t* count, T* out, std::siz
 XRAPI_ATTR XrResult XRAPI_CALL EnumerateInstanceExtensionProperties(const char* layer, std::uint32_t capacity,
                                                                     std::uint32_t* count, XrExtensionProperties* props) {
     if (layer && *layer) return XR_ERROR_API_LAYER_NOT_PRESENT;
-    return two_call(capacity, count, props, offered_extensions(), [](XrExtensionProperties& p, std::size_t i) {
-        std::strncpy(p.extensionName, kExtensions[i].name, XR_MAX_EXTENSION_NAME_SIZE - 1);
-        p.extensionVersion = kExtensions[i].version;
+    const auto offered = offered_extensions();
+    return two_call(capacity, count, props, offered.size(), [&](XrExtensionProperties& p, std::size_t i) {
+        std::strncpy(p.extensionName, offered[i].name, XR_MAX_EXTENSION_NAME_SIZE - 1);
+        p.extensionVersion = offered[i].version;
     });
 }
 
@@ -53,19 +77,25 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
     auto inst = std::make_unique<Instance>();
     for (std::uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
         std::string name = info->enabledExtensionNames[i];
+        if (name == XR_EXT_DEBUG_UTILS_EXTENSION_NAME) continue;   // the loader implements it
+        if (!offers(name)) return XR_ERROR_EXTENSION_NOT_PRESENT;
         if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) inst->vulkan2 = true;
-        else if (name == XR_KHR_VISIBILITY_MASK_EXTENSION_NAME) inst->visibility_mask = true;
-        else if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME && offered_extensions() == std::size(kExtensions))
-            inst->depth_layer = true;
-        else if (name == XR_EXT_DEBUG_UTILS_EXTENSION_NAME) continue;   // the loader implements it
-        else return XR_ERROR_EXTENSION_NOT_PRESENT;
+        if (name == XR_KHR_VISIBILITY_MASK_EXTENSION_NAME) inst->visibility_mask = true;
+        if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME) inst->depth_layer = true;
     }
+    // "WxH" for both eyes, or "WxH,WxH": a runtime may recommend a different size for each eye.
     if (const char* size = std::getenv("FG_XR_TEST_SIZE")) {
-        unsigned w = 0, h = 0;
-        if (std::sscanf(size, "%ux%u", &w, &h) == 2 && w > 0 && h > 0 && w <= 4096 && h <= 4096) {
-            inst->recommended_width = w;
-            inst->recommended_height = h;
+        unsigned w[2] = {0, 0}, h[2] = {0, 0};
+        const int read = std::sscanf(size, "%ux%u,%ux%u", &w[0], &h[0], &w[1], &h[1]);
+        if (read == 2) {
+            w[1] = w[0];
+            h[1] = h[0];
         }
+        for (int eye = 0; eye < 2 && (read == 2 || read == 4); ++eye)
+            if (w[eye] > 0 && h[eye] > 0 && w[eye] <= 4096 && h[eye] <= 4096) {
+                inst->recommended_width[eye] = w[eye];
+                inst->recommended_height[eye] = h[eye];
+            }
     }
     if (!inst->poses.error().empty()) inst->report.fail(0, inst->poses.error());
     if (!inst->input.error().empty()) inst->report.fail(0, inst->input.error());
@@ -176,9 +206,9 @@ XRAPI_ATTR XrResult XRAPI_CALL EnumerateViewConfigurationViews(XrInstance handle
     if (!inst) return XR_ERROR_HANDLE_INVALID;
     if (system != kSystemId) return XR_ERROR_SYSTEM_INVALID;
     if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
-    return two_call(capacity, count, views, 2, [inst](XrViewConfigurationView& v, std::size_t) {
-        v.recommendedImageRectWidth = inst->recommended_width;
-        v.recommendedImageRectHeight = inst->recommended_height;
+    return two_call(capacity, count, views, 2, [inst](XrViewConfigurationView& v, std::size_t eye) {
+        v.recommendedImageRectWidth = inst->recommended_width[eye];
+        v.recommendedImageRectHeight = inst->recommended_height[eye];
         v.maxImageRectWidth = 4096;
         v.maxImageRectHeight = 4096;
         v.recommendedSwapchainSampleCount = 1;
@@ -255,7 +285,18 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateVulkanDeviceKHR(XrInstance handle, const Xr
     if (!g_vk_instance) return XR_ERROR_RUNTIME_FAILURE;
     auto create = reinterpret_cast<PFN_vkCreateDevice>(info->pfnGetInstanceProcAddr(g_vk_instance, "vkCreateDevice"));
     if (!create) return XR_ERROR_RUNTIME_FAILURE;
-    *vk_result = create(info->vulkanPhysicalDevice, info->vulkanCreateInfo, info->vulkanAllocator, out);
+    // As Monado does for its compositor: where the application's chain has no
+    // VkPhysicalDeviceTimelineSemaphoreFeatures, one goes in front. Legal on its own, invalid next
+    // to an application's VkPhysicalDeviceVulkan12Features (VUID-VkDeviceCreateInfo-pNext-02830).
+    VkDeviceCreateInfo modified = *info->vulkanCreateInfo;
+    VkPhysicalDeviceTimelineSemaphoreFeatures timeline{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES};
+    if (!chain_has(modified.pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES)) {
+        timeline.timelineSemaphore = VK_TRUE;
+        timeline.pNext = const_cast<void*>(modified.pNext);
+        modified.pNext = &timeline;
+        inst->report.device_features_added.push_back("VkPhysicalDeviceTimelineSemaphoreFeatures");
+    }
+    *vk_result = create(info->vulkanPhysicalDevice, &modified, info->vulkanAllocator, out);
     if (*vk_result == VK_SUCCESS) inst->report.vulkan_device_created = true;
     return XR_SUCCESS;
 }

@@ -97,7 +97,7 @@ struct Instance {
     EventScript script;
     RuntimeReport report;
     XrTime clock = 1'000'000'000;
-    std::uint32_t recommended_width = 96, recommended_height = 96;
+    std::uint32_t recommended_width[2] = {96, 96}, recommended_height[2] = {96, 96};   // per eye
 };
 
 // The live instance (null when none), and handle lookups that return null for a stale handle.

@@ -27,6 +27,7 @@ void RuntimeReport::write() const {
     j["visibility_mask_calls"] = visibility_mask_calls;
     j["vulkan_instance_created_by_runtime"] = vulkan_instance_created;
     j["vulkan_device_created_by_runtime"] = vulkan_device_created;
+    j["device_features_added_by_runtime"] = device_features_added;
     j["exit_requested"] = exit_requested;
     j["session_ended"] = session_ended;
     j["session_destroyed"] = session_destroyed;
@@ -39,6 +40,7 @@ void RuntimeReport::write() const {
     j["actions_synced"] = actions_synced;
     if (reference_compared)
         j["reference"] = {{"differ_fraction", reference_differ_fraction}, {"max_diff", reference_max_diff}};
+    j["colour"] = {{"eyes_compared", colour.eyes_compared}, {"worst", colour.worst}, {"steps", colour.steps}};
     j["depth_layer"] = {{"frames_with_depth", frames_with_depth},
                         {"format", depth_format},
                         {"sky_fraction_left", sky_fraction[0]},

@@ -13,6 +13,7 @@ struct RuntimeReport {
     std::vector<std::string> swapchains;  // "R8G8B8A8_UNORM 96x96"
     int visibility_mask_calls = 0;
     bool vulkan_instance_created = false, vulkan_device_created = false;
+    std::vector<std::string> device_features_added;   // feature structs the runtime put into fgplay's device chain
     bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;
     double mean_luma_left = 0.0, mean_luma_right = 0.0;   // of the last checked frame
     double eyes_differ_fraction = 0.0;                     // of the last checked frame
@@ -25,6 +26,12 @@ struct RuntimeReport {
     bool reference_compared = false;
     double reference_differ_fraction = 1.0;   // pixels with a channel more than 2 levels off
     int reference_max_diff = 255;
+    // $FG_XR_TEST_COLOUR_PNGS: every eye against the PNG fgplay wrote for its frame.
+    struct Colour {
+        int eyes_compared = 0;
+        double worst = 0.0;
+        std::string steps;
+    } colour;
     int frames_with_depth = 0;                             // XR_KHR_composition_layer_depth on both views
     std::string depth_format;
     double sky_fraction[2] = {0.0, 0.0};                   // of the last frame's depth: pixels at maxDepth

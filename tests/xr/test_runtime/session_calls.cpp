@@ -1,30 +1,20 @@
 // The test runtime's session-level calls: lifecycle, spaces, swapchains backed by images on
 // fgplay's VkDevice, the frame loop with scripted poses, the visibility mask, and the frame checks
 // in xrEndFrame.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 
 #include "depth_layer_check.h"
+#include "swapchain_colour.h"
 #include "runtime_objects.h"
 
 namespace fgxrt {
 
 namespace {
-
-constexpr VkFormat kFormats[] = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_SRGB,
-                                 VK_FORMAT_B8G8R8A8_UNORM};
-
-const char* format_name(VkFormat f) {
-    switch (f) {
-        case VK_FORMAT_R8G8B8A8_SRGB: return "R8G8B8A8_SRGB";
-        case VK_FORMAT_R8G8B8A8_UNORM: return "R8G8B8A8_UNORM";
-        case VK_FORMAT_B8G8R8A8_SRGB: return "B8G8R8A8_SRGB";
-        case VK_FORMAT_B8G8R8A8_UNORM: return "B8G8R8A8_UNORM";
-        default: return "unexpected format";
-    }
-}
 
 // Depth formats for XR_KHR_composition_layer_depth; FG_XR_TEST_DEPTH_FORMAT=D16_UNORM offers only that one.
 std::vector<VkFormat> depth_formats() {
@@ -62,6 +52,15 @@ void destroy_swapchain_images(Swapchain& sc) {
     for (VkDeviceMemory m : sc.memory) vkFreeMemory(device, m, nullptr);
     sc.images.clear();
     sc.memory.clear();
+}
+
+// Down to STOPPING the way the specification's state diagram goes: FOCUSED, VISIBLE,
+// SYNCHRONIZED, STOPPING, each an event of its own.
+void walk_down_to_stopping(Session& s) {
+    if (s.state == XR_SESSION_STATE_STOPPING) return;
+    if (s.state == XR_SESSION_STATE_FOCUSED) push_state(s, XR_SESSION_STATE_VISIBLE);
+    if (s.state == XR_SESSION_STATE_VISIBLE) push_state(s, XR_SESSION_STATE_SYNCHRONIZED);
+    push_state(s, XR_SESSION_STATE_STOPPING);
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL CreateSession(XrInstance handle, const XrSessionCreateInfo* info, XrSession* out) {
@@ -125,6 +124,8 @@ XRAPI_ATTR XrResult XRAPI_CALL BeginSession(XrSession handle, const XrSessionBeg
     s->begin_time = inst->clock;
     s->next_display_time = inst->clock + 2 * kPeriodNs;
     push_state(*s, XR_SESSION_STATE_SYNCHRONIZED);
+    // stop@0: the user quits while the application starts; the session never becomes visible.
+    if (inst->script.stop_at == 0) walk_down_to_stopping(*s);
     return XR_SUCCESS;
 }
 
@@ -149,7 +150,7 @@ XRAPI_ATTR XrResult XRAPI_CALL RequestExitSession(XrSession handle) {
     if (!s->running) return XR_ERROR_SESSION_NOT_RUNNING;
     s->exit_requested = true;
     live_instance()->report.exit_requested = true;
-    push_state(*s, XR_SESSION_STATE_STOPPING);
+    walk_down_to_stopping(*s);
     return XR_SUCCESS;
 }
 
@@ -186,7 +187,7 @@ XRAPI_ATTR XrResult XRAPI_CALL DestroySpace(XrSpace handle) {
 XRAPI_ATTR XrResult XRAPI_CALL EnumerateSwapchainFormats(XrSession handle, std::uint32_t capacity, std::uint32_t* count,
                                                          std::int64_t* formats) {
     if (!session(handle)) return XR_ERROR_HANDLE_INVALID;
-    std::vector<VkFormat> all(std::begin(kFormats), std::end(kFormats));
+    std::vector<VkFormat> all = offered_colour_formats();
     for (VkFormat f : depth_formats()) all.push_back(f);
     return two_call(capacity, count, formats, all.size(), [&](std::int64_t& f, std::size_t i) { f = all[i]; });
 }
@@ -195,7 +196,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSwapchain(XrSession handle, const XrSwapcha
     Session* s = session(handle);
     if (!s) return XR_ERROR_HANDLE_INVALID;
     bool known = false;
-    for (VkFormat f : kFormats) known = known || f == info->format;
+    for (VkFormat f : offered_colour_formats()) known = known || f == info->format;
     const bool depth = is_depth_format(static_cast<VkFormat>(info->format));
     for (VkFormat f : depth_formats()) known = known || f == info->format;
     if (!known) return XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED;
@@ -248,7 +249,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSwapchain(XrSession handle, const XrSwapcha
         if (depth) s->inspector->prepare_depth(image);
         else s->inspector->prepare(image);
     }
-    live_instance()->report.swapchains.push_back(std::string(depth ? depth_format_name(sc->format) : format_name(sc->format)) + " " + std::to_string(sc->width) +
+    live_instance()->report.swapchains.push_back(std::string(depth ? depth_format_name(sc->format) : colour_format_name(sc->format)) + " " + std::to_string(sc->width) +
                                                  "x" + std::to_string(sc->height));
     *out = reinterpret_cast<XrSwapchain>(sc.get());
     s->swapchains.push_back(std::move(sc));
@@ -355,6 +356,30 @@ XRAPI_ATTR XrResult XRAPI_CALL LocateViews(XrSession handle, const XrViewLocateI
     });
 }
 
+// Each eye, decoded as the spec says for its swapchain's format, against the PNG fgplay wrote for
+// the same frame (fgplay xr --record: the layer's index among frames with a layer).
+template <typename Fail>
+void check_colour(const EyeImage (&eyes)[2], const std::string& folder, int layer_frame, Fail& fail) {
+    RuntimeReport& report = live_instance()->report;
+    char number[16];
+    std::snprintf(number, sizeof number, "%06d", layer_frame);
+    for (int eye = 0; eye < 2; ++eye) {
+        const std::string name = eye ? "right" : "left";
+        const ColourComparison c = compare_colour_with_png(eyes[eye], folder + "/" + name + "_" + number + ".png", 2.0);
+        if (!c.compared) {
+            fail(name + " eye: no PNG of this frame to compare its colour with (" + folder + "/" + name + "_" + number + ".png)");
+            continue;
+        }
+        ++report.colour.eyes_compared;
+        report.colour.steps = c.steps;
+        report.colour.worst = std::max(report.colour.worst, c.worst);
+        if (c.off > 0)
+            fail(name + " eye: " + std::to_string(c.off) + " pixels differ from the PNG of the same frame by more than 2 " +
+                 c.steps + " (at most " + std::to_string(c.worst) + ") once decoded as " + colour_format_name(eyes[eye].format) +
+                 " says");
+    }
+}
+
 void inspect(Session& s, const XrFrameEndInfo& info) {
     Instance* inst = live_instance();
     RuntimeReport& report = inst->report;
@@ -389,11 +414,9 @@ void inspect(Session& s, const XrFrameEndInfo& info) {
         if (r.offset.x != 0 || r.offset.y != 0 || r.extent.width != static_cast<std::int32_t>(sc->width) ||
             r.extent.height != static_cast<std::int32_t>(sc->height))
             fail(std::string(name) + " eye: the image rectangle does not cover the swapchain image");
-        if (sc->width != inst->recommended_width || sc->height != inst->recommended_height)
+        if (sc->width != inst->recommended_width[eye] || sc->height != inst->recommended_height[eye])
             fail(std::string(name) + " eye: the swapchain is not the recommended size");
-        if (sc->format != VK_FORMAT_R8G8B8A8_UNORM && sc->format != VK_FORMAT_R8G8B8A8_SRGB &&
-            sc->format != VK_FORMAT_B8G8R8A8_UNORM && sc->format != VK_FORMAT_B8G8R8A8_SRGB)
-            fail(std::string(name) + " eye: unexpected format");
+        if (!is_colour_format(sc->format)) fail(std::string(name) + " eye: unexpected format");
         Space* sp = space(projection->space);
         if (sp && sp->type != XR_REFERENCE_SPACE_TYPE_VIEW &&
             !pose_close(v.pose, inst->poses.eye(seconds(s, info.displayTime), eye)))
@@ -412,6 +435,7 @@ void inspect(Session& s, const XrFrameEndInfo& info) {
     report.mean_luma_right = verdict.mean_luma[1];
     report.eyes_differ_fraction = verdict.eyes_differ_fraction;
     report.frame_luma.push_back(verdict.mean_luma[0]);
+    if (const char* pngs = std::getenv("FG_XR_TEST_COLOUR_PNGS")) check_colour(eyes, pngs, report.frames_with_layers - 1, fail);
     if (const char* reference = std::getenv("FG_XR_TEST_REFERENCE")) {
         ImageDifference d = compare_with_png(eyes[0], reference);
         report.reference_compared = d.compared;
@@ -435,7 +459,7 @@ XRAPI_ATTR XrResult XRAPI_CALL EndFrame(XrSession handle, const XrFrameEndInfo* 
     Instance* inst = live_instance();
     inspect(*s, *info);
     int ended = ++inst->report.frames_ended;
-    if (ended == inst->script.stop_at && s->state != XR_SESSION_STATE_STOPPING) push_state(*s, XR_SESSION_STATE_STOPPING);
+    if (ended == inst->script.stop_at) walk_down_to_stopping(*s);
     if (ended == inst->script.loss_at) {
         s->lost = true;
         push_state(*s, XR_SESSION_STATE_LOSS_PENDING);

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, FG_FUZZ=ON, in $FG_BUILD_DIR-fuzz) and runs each for SECONDS
+# (default 600) on its corpus, kept in the fuzz build folder between runs, and the committed seeds
+# in tests/fuzz/corpus/. Ends with a table of executions and corpus sizes per fuzzer (docs/testing.md).
+# A crash stops it with exit 1; the reproducer stays in the fuzz build folder.
+#   bash scripts/fuzz.sh [SECONDS]     scripts/fractograph.sh test runs it with 60
+# Packages: scripts/fractograph.sh installs clang and libclang-rt-14-dev (TEST_PACKAGES).
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+FUZZ=${FG_BUILD_DIR:-$ROOT/build}-fuzz
+JOBS=${FG_JOBS:-$(nproc)}
+SECONDS_EACH=${1:-600}
+FUZZERS=(fuzz_graph_loader fuzz_pack_reader fuzz_compiler)
+
+if [ ! -f "$FUZZ/build.ninja" ]; then
+  CC=clang CXX=clang++ cmake -S "$ROOT" -B "$FUZZ" -G Ninja -DFG_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+fi
+echo "building the fuzzers (log: $FUZZ/build.log)"
+cmake --build "$FUZZ" -j "$JOBS" >"$FUZZ/build.log" 2>&1 || { tail -60 "$FUZZ/build.log"; exit 1; }
+
+count() { find "$1" -type f 2>/dev/null | wc -l; }
+rows=()
+for target in "${FUZZERS[@]}"; do
+  corpus=$FUZZ/corpus/$target log=$FUZZ/$target.log
+  mkdir -p "$corpus"
+  before=$(count "$corpus")
+  echo "fuzzing $target for ${SECONDS_EACH}s (log: $log)"
+  # -timeout: one compile of a strange graph under ASan takes seconds, not minutes.
+  if ! "$FUZZ/tests/fuzz/$target" -max_total_time="$SECONDS_EACH" -print_final_stats=1 -close_fd_mask=3 -timeout=120 \
+      -rss_limit_mb=4096 -artifact_prefix="$FUZZ/$target-" "$corpus" "$ROOT/tests/fuzz/corpus/${target#fuzz_}" >"$log" 2>&1; then
+    tail -60 "$log"; echo "$target found a crash (reproducer: $FUZZ/$target-crash-*)"; exit 1
+  fi
+  runs=$(grep -oE '^stat::number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+$')
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+$')
+  rows+=("| $target | ${SECONDS_EACH} s | $runs | $((runs / SECONDS_EACH)) | $before -> $(count "$corpus") | $cov |")
+done
+printf '\n| fuzzer | time | executions | per second | corpus (inputs, before -> after) | coverage (edges) |\n'
+printf '|---|---|---|---|---|---|\n'
+printf '%s\n' "${rows[@]}"
