@@ -306,9 +306,16 @@ std::array<std::uint32_t, 3> group_count(const FramePass& pass, const ManifestPa
 
 void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
     if (!images_initialised_) {
+        // Zeros rather than whatever the memory held: an image a pass reads before any writes (a
+        // placeholder, a history image on the first frame) holds the same bytes on every run.
+        const VkClearColorValue zero{};
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         for (auto& [_, versions] : images_)
-            for (auto& img : versions)
-                img->transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::none, vk::access::compute_read_write);
+            for (auto& img : versions) {
+                img->transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::none, vk::access::transfer_write);
+                vkCmdClearColorImage(cmd, img->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+            }
+        vk::memory_barrier(cmd, vk::access::transfer_write, vk::access::compute_read_write);
         images_initialised_ = true;
     }
     // What earlier frames (earlier submissions) wrote or read, before this frame touches it again:
