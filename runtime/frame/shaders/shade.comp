@@ -27,6 +27,23 @@ layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D fg_cache_color;
 layout(set = 0, binding = 10, r32f) uniform writeonly image2D fg_cache_depth;
 layout(push_constant) uniform FgShadePush { ShadePush pc; };
 
+// The pixel of view o (an eye `eye` shaded, this frame or the one before) that the point p lands
+// on; false when p is behind it, outside its image, or on a pixel foveation left unshaded (the
+// fovea pass filled it).
+bool fg_shaded_pixel_of(int eye, GpuView o, vec3 p, out ivec2 at)
+{
+    vec3 q = p - o.origin.xyz;
+    float z = dot(q, o.forward.xyz);
+    if (z <= 0.0) return false;
+    vec2 tangent = vec2(dot(q, o.right.xyz), dot(q, o.up.xyz)) / z;
+    vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
+                   (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
+    ivec2 size = ivec2(fg_frame.eye_size);
+    at = ivec2(floor(uv * vec2(size)));
+    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
+    return ((at.x | at.y) & 1) == 0 || fg_periphery(eye, at) < 1.0;
+}
+
 // Shading reuse across the eyes: the point p, seen by the other eye, lands on one of its pixels;
 // where that pixel's hit is the same point (depth agrees within FG_SHADE_REUSE cone radii), its
 // colour is taken instead of shading p again. View-dependent terms (rim, SSS) then come from the
@@ -36,20 +53,10 @@ bool fg_reuse_other_eye(vec3 p, out vec4 color)
     if (fg_frame.projection != FG_PROJECTION_PERSPECTIVE) return false;
     int other = 1 - pc.view;
     GpuView o = fg_frame.views[other];
-    vec3 q = p - o.origin.xyz;
-    float z = dot(q, o.forward.xyz);
-    if (z <= 0.0) return false;
-    vec2 tangent = vec2(dot(q, o.right.xyz), dot(q, o.up.xyz)) / z;
-    vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
-                   (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
-    ivec2 size = ivec2(fg_frame.eye_size);
-    ivec2 at = ivec2(floor(uv * vec2(size)));
-    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
-    // A foveated-away pixel of the other eye has no colour yet: the fovea pass fills it later.
-    if (((at.x | at.y) & 1) != 0 && fg_periphery(other, at) >= 1.0) return false;
-    if (fg_outside_lens(other, at)) return false;
+    ivec2 at;
+    if (!fg_shaded_pixel_of(other, o, p, at) || fg_outside_lens(other, at)) return false;
     float t_other = imageLoad(fg_other_depth, at).x;
-    float seen = length(q);
+    float seen = length(p - o.origin.xyz);
     if (t_other < 0.0 || abs(t_other - seen) > FG_SHADE_REUSE * fg_cone_tan(0) * seen) return false;
     color = imageLoad(fg_other_color, at);
     return true;
@@ -64,23 +71,14 @@ const float kHistoryAge = 2.0;
 bool fg_reuse_previous_frame(vec3 p, float t, out vec4 color)
 {
     GpuView o = fg_frame.previous[pc.view];
-    vec3 q = p - o.origin.xyz;
-    float z = dot(q, o.forward.xyz);
-    if (z <= 0.0) return false;
-    vec2 tangent = vec2(dot(q, o.right.xyz), dot(q, o.up.xyz)) / z;
-    vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
-                   (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
-    ivec2 size = ivec2(fg_frame.eye_size);
-    ivec2 at = ivec2(floor(uv * vec2(size)));
-    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
-    // A foveated-away pixel was never shaded (the fovea pass filled it).
-    if (((at.x | at.y) & 1) != 0 && fg_periphery(pc.view, at) >= 1.0) return false;
+    ivec2 at;
+    if (!fg_shaded_pixel_of(pc.view, o, p, at)) return false;
     float t_old = imageLoad(fg_history_depth, at).x;
     if (t_old < 0.0) return false;
     color = imageLoad(fg_history_color, at);
     if (color.a >= kHistoryAge) return false;
     // The old pixel's hit, on the old ray through its centre.
-    vec2 c = (vec2(at) + 0.5) / vec2(size);
+    vec2 c = (vec2(at) + 0.5) / vec2(fg_frame.eye_size);
     vec3 old_dir = normalize(o.forward.xyz + mix(o.tan_fov.x, o.tan_fov.y, c.x) * o.right.xyz +
                              mix(o.tan_fov.w, o.tan_fov.z, c.y) * o.up.xyz);
     vec3 old_hit = o.origin.xyz + old_dir * t_old;
