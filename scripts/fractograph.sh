@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # One entry point for setting up, building and running Fractograph on Debian 12.
 #   bash scripts/fractograph.sh demo   install, build, compile a gallery graph, render a stereo frame
-#   bash scripts/fractograph.sh test   install, build, run every test; each fuzzer for a minute
-#                                      (scripts/fuzz.sh SECONDS for long runs)
+#   bash scripts/fractograph.sh test   install, build, run every test; again under ASan + UBSan; each
+#                                      fuzzer for a minute (scripts/fuzz.sh SECONDS for long runs)
 #   bash scripts/fractograph.sh build  install and build only
 # Idempotent: packages already installed are not touched, and a built tree only rebuilds what changed.
 set -euo pipefail
@@ -95,11 +95,36 @@ run_fuzzers() {
   bash "$ROOT/scripts/fuzz.sh" "${FG_FUZZ_SECONDS:-60}"
 }
 
+# The project again with AddressSanitizer and UndefinedBehaviorSanitizer (gcc, FG_SANITIZE=ON, in
+# $BUILD-sanitize, no benchmark programs) and the tests that run in reasonable time under them.
+# Left out (docs/testing.md): the gallery's frame hashes (2.5 min plain, the same passes as the
+# other runtime tests), the studio in Chromium and the Slurm cluster (a browser and daemons, not
+# our code).
+SANITIZE_SKIP='^FrameHashes\.|^studio\.browser|^slurm\.'
+run_sanitized_tests() {
+  local san=$BUILD-sanitize start=$SECONDS
+  if [ ! -f "$san/build.ninja" ]; then
+    cmake -S "$ROOT" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFG_SANITIZE=ON -DFG_BUILD_BENCH=OFF >/dev/null
+  fi
+  say "building with ASan + UBSan (log: $san/build.log)"
+  run_logged "$san/build.log" cmake --build "$san" -j "$JOBS"
+  local built=$((SECONDS - start))
+  say "running the tests under ASan + UBSan"
+  # Leaks inside Debian's validation layer and OpenXR loader are theirs (tests/sanitizers/lsan.supp).
+  (cd "$san" && MESA_SHADER_CACHE_DIR=$san/mesa-cache \
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0 \
+    LSAN_OPTIONS=suppressions=$ROOT/tests/sanitizers/lsan.supp:print_suppressions=0 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --output-on-failure -j "$JOBS" --timeout 1500 -E "$SANITIZE_SKIP")
+  say "sanitizer build $((built / 60)) min, its tests $(((SECONDS - start - built) / 60)) min"
+}
+
 test_all() {
   install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
   build
   say "running tests"
   (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" --timeout 1500)
+  run_sanitized_tests
   run_fuzzers
   say "all tests passed"
 }
