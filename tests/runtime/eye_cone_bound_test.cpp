@@ -1,7 +1,8 @@
-// Level 0 of an eye records its pixel's own cone bound (for reuse in later frames): the balls of
-// the eye's plain sphere-tracing samples certify its whole pixel cone, so the bound holds for the
-// rays through the pixel's corners too, and it reaches past the parent cone's bound, which is all
-// an eye recorded before.
+// With cross-frame reuse, level 0 of an eye records its pixel's own cone bound (for the next frame):
+// the balls of the eye's plain sphere-tracing samples certify its whole pixel cone, so the bound
+// holds for the rays through the pixel's corners too, and it reaches past the parent cone's bound,
+// which is all an eye records without reuse (nothing reads it then, and the certificate costs a
+// tenth of level 0's time on lavapipe).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,7 +24,9 @@ TEST_F(EyeConeBound, level_0_of_an_eye_bounds_its_whole_pixel_cone_beyond_the_pa
     FrameSettings fs;
     fs.width = fs.height = kSize;
     fs.cone_levels = 4;
+    fs.knobs["reuse"] = 1.0;
     HeadlessRenderer r(test::shared_context(), pack, fs, {});
+    ASSERT_TRUE(r.executor().graph().reuse);
     RenderedFrame frame = r.render(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), 0.0);
     auto atlas = r.executor().download("cone.left");
     const View& view = r.views().left;
@@ -59,4 +62,26 @@ TEST_F(EyeConeBound, level_0_of_an_eye_bounds_its_whole_pixel_cone_beyond_the_pa
     EXPECT_GT(pixels, kSize * kSize / 2);
     EXPECT_EQ(violations, 0u) << violations << " of " << corners << " corner rays meet the surface before the bound";
     EXPECT_GT(beyond_parent, pixels * 9 / 10);
+}
+
+TEST_F(EyeConeBound, without_reuse_an_eye_records_its_parents_bound) {
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    constexpr std::uint32_t kSize = 48;
+    FrameSettings fs;
+    fs.width = fs.height = kSize;
+    fs.cone_levels = 4;
+    HeadlessRenderer r(test::shared_context(), pack, fs, {});
+    ASSERT_FALSE(r.executor().graph().reuse);
+    RenderedFrame frame = r.render(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), 0.0);
+    auto atlas = r.executor().download("cone.left");
+    std::size_t pixels = 0, parents = 0;
+    for (std::uint32_t y = 0; y < kSize; ++y)
+        for (std::uint32_t x = 0; x < kSize; ++x) {
+            if (frame.depth_left[y * kSize + x] < 0.0f) continue;
+            ++pixels;
+            if (test::atlas_cone_bound(atlas, kSize, kSize, 0, x, y) == test::atlas_cone_bound(atlas, kSize, kSize, 1, x, y))
+                ++parents;
+        }
+    EXPECT_GT(pixels, kSize * kSize / 2);
+    EXPECT_EQ(parents, pixels);
 }

@@ -107,7 +107,9 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
     r.t = max(r.covered, r.range.x);
     r.start = max(parent, r.range.x);
     r.resumed = r.t;
-    r.bound = fg_escaped();
+    // An eye's march keeps its cone safe for no step (fg_cover certifies the cone instead): its bound
+    // closes where it starts. The centre eye's stays open until its cone may touch.
+    r.bound = pc.view == FG_VIEW_CENTRE ? fg_escaped() : r.t;
     r.closest = 1e30;
     r.previous = 0.0;
     r.step = 0.0;
@@ -144,8 +146,10 @@ void fg_fine_step(inout FgFineRay r)
     }
     float d = fg_scene_distance(r.ro + r.rd * r.t) * FG_STEP_SCALE;
     fg_evaluations++;
-    // Over-relaxation (Keinert et al.): if the spheres stop overlapping, step back.
-    if (r.omega > 1.0 && r.bound <= r.range.y && d + r.previous < r.step) {
+    // Over-relaxation (Keinert et al.): if the spheres stop overlapping, step back. The knob is a
+    // specialization constant, so without it the check costs nothing; every test of a step costs
+    // all SIMD lanes on a CPU rasteriser.
+    if (FG_OVERRELAX > 1.0 && r.omega > 1.0 && r.bound <= r.range.y && d + r.previous < r.step) {
         r.t -= r.step - r.previous;
         r.omega = 1.0;
         r.step = r.previous;
@@ -153,18 +157,24 @@ void fg_fine_step(inout FgFineRay r)
         r.marching = ++r.i < FG_FINE_STEPS;
         return;
     }
-    r.closest = min(r.closest, fg_cover(r, d));
+    // Only a later frame's reuse reads an eye's own cone bound: without it the eye records its
+    // parent's, and its steps skip the certificate (a tenth of level 0's time on lavapipe).
+    r.closest = min(r.closest, FG_REUSE ? fg_cover(r, d) : d);
     float radius = r.cone * r.t;
-    if (r.bound > r.range.y && (pc.view != FG_VIEW_CENTRE || d <= FG_CONE_STOP * radius)) r.bound = r.t;
+    // Until the centre eye's cone touches, its steps stay safe for the whole cone, so `bound` is a
+    // lower bound for every ray of the pixel (pc.view is uniform: a real branch, not a masked one).
+    bool cone_safe = false;
+    if (pc.view == FG_VIEW_CENTRE) {
+        if (r.bound > r.range.y && d <= FG_CONE_STOP * radius) r.bound = r.t;
+        cone_safe = r.bound > r.range.y;
+    }
     if (d < FG_EPSILON * radius) {
         r.hit = true;
         r.marching = false;
         return;
     }
     r.previous = d;
-    // Until the pixel's cone touches, keep the step safe for the whole cone, so `bound` is a
-    // lower bound for every ray of the pixel.
-    r.step = r.bound > r.range.y ? (d - radius) / (1.0 + r.cone) : d * r.omega;
+    r.step = cone_safe ? (d - radius) / (1.0 + r.cone) : d * r.omega;
     r.t += r.step;
     r.escaped = r.t > r.range.y;
     r.marching = !r.escaped && ++r.i < FG_FINE_STEPS;
