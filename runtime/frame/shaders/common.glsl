@@ -134,6 +134,17 @@ ivec4 fg_level_rect(int level, ivec2 full)
     return ivec4(full.x, y, size);
 }
 
+// The grid cell (pixel, or block of a coarse level) of this invocation of an 8x8 workgroup. Each
+// run of 8 consecutive invocations (one SIMD group on llvmpipe's 8 lanes, a quarter of a 32-lane
+// warp) takes a 4x2 block rather than a row of 8: its rays stay closer together, so fewer lanes
+// wait for the group's slowest ray (filled bulb 192², level 0's lanes busy 0.66 -> 0.73).
+ivec2 fg_invocation_cell()
+{
+    uint lane = gl_LocalInvocationIndex & 7u, group = gl_LocalInvocationIndex >> 3u;
+    uvec2 in_group = uvec2((group & 1u) * 4u + (lane & 3u), (group >> 1u) * 2u + (lane >> 2u));
+    return ivec2(gl_WorkGroupID.xy * 8u + in_group);
+}
+
 // A miss in a depth image. Depths are distances along the ray, never NaN or infinite.
 #define FG_MISS (-1.0)
 

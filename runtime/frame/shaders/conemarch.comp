@@ -264,7 +264,7 @@ void main()
         return;
     }
     ivec4 rect = fg_level_rect(pc.level, full);
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
+    ivec2 pixel = fg_invocation_cell() * pc.stride;
     if (pixel.x >= rect.z || pixel.y >= rect.w) return;
     if (pc.level == 0 && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_skip_outside_lens(pixel, rect, full)) return;
