@@ -51,7 +51,7 @@ std::string csv_text(std::string s) {
 }  // namespace
 
 void SequenceRow::summarize() {
-    std::vector<double> ms, wrong, over, quality, evals;
+    std::vector<double> ms, wrong, over, quality, evals, iterations;
     rendered = dark = counted = 0;
     not_finite_worst = 0;
     std::vector<double> after;
@@ -70,6 +70,7 @@ void SequenceRow::summarize() {
         if (f.evaluations_per_pixel >= 0.0) {
             ++counted;
             evals.push_back(f.evaluations_per_pixel);
+            iterations.push_back(f.iterations_per_pixel);
         }
     }
     median_ms = median(ms);
@@ -77,6 +78,7 @@ void SequenceRow::summarize() {
     p99_ms = percentile(ms, 99.0);
     worst_ms = largest(ms);
     evaluations_per_pixel = mean(evals);
+    iterations_per_pixel = mean(iterations);
     reuse_skipped_fraction = reuse_skipped_frames > 0 ? reuse_skipped_sum / reuse_skipped_frames : 0.0;
     misclassified_mean = mean(wrong);
     misclassified_worst = largest(wrong);
@@ -126,7 +128,7 @@ void SequenceReport::write(const std::string& folder) const {
 
     std::ofstream csv(fs::path(folder) / "sequence.csv");
     csv << "scene,trace,setting,method,pixels,stereo,persistent_lanes,lens_mask,foveation,size,frames,dark_frames,"
-           "counted_frames,frame_ms_median,frame_ms_p99,frame_ms_worst,after_march_share,evals_per_px";
+           "counted_frames,frame_ms_median,frame_ms_p99,frame_ms_worst,after_march_share,evals_per_px,iterations_per_px";
     for (const auto& g : groups) csv << ",lanes_" << g;
     csv << ",misclassified_pct_mean,misclassified_pct_worst,overstepped_pct_mean,overstepped_pct_worst,"
            "not_finite_worst,"
@@ -135,11 +137,11 @@ void SequenceReport::write(const std::string& folder) const {
     for (const auto& r : rows) {
         const FrameSettings& f = r.setting.frame;
         auto lanes = f.knobs.find("persistent_lanes");
-        csv << fmt::format("{},{},{},{},{},{},{},{},{:g},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f}", r.scene, r.trace,
+        csv << fmt::format("{},{},{},{},{},{},{},{},{:g},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f}", r.scene, r.trace,
                            r.setting.name(), r.setting.method, r.setting.pixels, stereo_mode_name(f.stereo),
                            lanes != f.knobs.end() && lanes->second != 0.0 ? 1 : 0, f.lens_mask ? 1 : 0,
                            std::max(0.0, f.foveation), f.width, r.rendered, r.dark, r.counted, r.median_ms, r.p99_ms,
-                           r.worst_ms, r.after_march_share, r.evaluations_per_pixel);
+                           r.worst_ms, r.after_march_share, r.evaluations_per_pixel, r.iterations_per_pixel);
         for (const auto& g : groups) csv << "," << lane_cell(r, g);
         csv << fmt::format(",{:.4f},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{}\n",
                            r.misclassified_mean, r.misclassified_worst, r.overstepped_mean, r.overstepped_worst,
@@ -212,23 +214,23 @@ void SequenceReport::write(const std::string& folder) const {
     for (const auto& [scene, trace] : scene_traces) {
         if (scene != scene_now) md << "\n## " << (scene_now = scene) << "\n";
         md << "\n### " << trace
-           << "\n\n| setting | frames | median ms | p99 ms | worst ms | after the march | evals/px | SIMD lanes busy | "
+           << "\n\n| setting | frames | median ms | p99 ms | worst ms | after the march | evals/px | fractal iterations/px | SIMD lanes busy | "
               "wrong % mean | wrong % worst | overstep % mean | overstep % worst | PSNR mean | PSNR worst | reuse "
               "skipped | × naive (median / p99) | × naive + lanes (median / p99) |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+              "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& r : rows) {
             if (r.scene != scene || r.trace != trace) continue;
             bool base = r.setting.baseline != SequenceBaseline::None;
             std::string name = base ? "**" + r.setting.name() + "**" : r.setting.name();
             if (!r.error.empty()) {
-                md << fmt::format("| {} | error: {} ||||||||||||||||\n", name, r.error);
+                md << fmt::format("| {} | error: {} |||||||||||||||||\n", name, r.error);
                 continue;
             }
             md << fmt::format(
-                "| {} | {}{} | {:.2f} | {:.2f} | {:.2f} | {:.0f} % | {:.2f} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
+                "| {} | {}{} | {:.2f} | {:.2f} | {:.2f} | {:.0f} % | {:.2f} | {:.2f} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
                 "{:.1f} | {:.1f} | {:.2f} | {} / {} | {} / {} |\n",
                 name, r.rendered, r.dark ? fmt::format(" (+{} dark)", r.dark) : "", r.median_ms, r.p99_ms, r.worst_ms,
-                100.0 * r.after_march_share, r.evaluations_per_pixel, lanes_summary(r), r.misclassified_mean, r.misclassified_worst,
+                100.0 * r.after_march_share, r.evaluations_per_pixel, r.iterations_per_pixel, lanes_summary(r), r.misclassified_mean, r.misclassified_worst,
                 r.overstepped_mean, r.overstepped_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
                 ratio_cell(r.speedup_median_naive), ratio_cell(r.speedup_p99_naive),
                 ratio_cell(r.speedup_median_naive_lanes), ratio_cell(r.speedup_p99_naive_lanes));

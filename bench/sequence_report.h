@@ -20,6 +20,7 @@ struct SequenceFrame {
     double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
     std::size_t not_finite = 0;
     double evaluations_per_pixel = -1.0;   // from the counting renderer; < 0 on frames it skipped
+    double iterations_per_pixel = -1.0;    // fractal loop iterations, the same way
 };
 
 struct SequenceRow {
@@ -32,7 +33,7 @@ struct SequenceRow {
     double reuse_skipped_sum = 0.0;            // over the counted frames, to make the mean
     int reuse_skipped_frames = 0;
     // Over the frames rendered (not dark): filled by summarize().
-    double median_ms = 0.0, p99_ms = 0.0, worst_ms = 0.0, evaluations_per_pixel = 0.0;
+    double median_ms = 0.0, p99_ms = 0.0, worst_ms = 0.0, evaluations_per_pixel = 0.0, iterations_per_pixel = 0.0;
     double after_march_share = 0.0;   // median over frames of after_march_ms / gpu_ms
     double misclassified_mean = 0.0, misclassified_worst = 0.0, overstepped_mean = 0.0, overstepped_worst = 0.0;
     double psnr_mean = 0.0, psnr_worst = 0.0;

@@ -162,6 +162,7 @@ void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, co
                 if (auto it = counted.reuse_skipped.find("march.L0"); it != counted.reuse_skipped.end())
                     row.reuse_skipped_sum += it->second, ++row.reuse_skipped_frames;
                 f.evaluations_per_pixel = counted.evaluations_per_pixel;
+                f.iterations_per_pixel = counted.iterations_per_pixel;
                 if (row.counter_groups.empty())
                     for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
                 for (const auto& [group, lanes] : counted.lanes) {

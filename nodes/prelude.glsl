@@ -3,6 +3,12 @@
 
 const float FG_PI = 3.14159265358979;
 const float FG_TINY = 1e-20;
+// Fractal loops call fg_count_fractal_iteration() once per iteration: marching passes count them in
+// their counting frame (march_counters.glsl); everywhere else, and in the CPU twin, it is nothing.
+#ifndef FG_COUNTS_FRACTAL_ITERATIONS
+#define fg_count_fractal_iteration()
+#endif
+
 // Cap of a running derivative. At high iteration counts dr grows past float's 3.4e38 (16^64 for a
 // power-16 bulb); capped here, with a bias up to 4 it stays finite, and a distance r log r / dr
 // with r below FG_RADIUS_MAX is below 1e-17 anyway.

@@ -6,6 +6,7 @@ void fg_fractal_apollonian(vec3 p, float size, float inversion, float thickness,
     float dr = 1.0;
     trap = vec4(1e4);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         // Fold into the unit cell [-1, 1]^3, then invert in the sphere of squared radius `inversion`.
         z = 2.0 * fract(0.5 * z + vec3(0.5)) - vec3(1.0);
         float r2 = max(dot(z, z), 1e-12);

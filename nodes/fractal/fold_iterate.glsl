@@ -13,6 +13,7 @@ void fg_fractal_fold_iterate(vec3 p, bool mirror, bool sort, float box_limit, fl
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         if (r2 > bail2) break;
         // Each stage is a fold (a piecewise isometry) or a uniform scale, so dr tracks them exactly.
         if (mirror) z = abs(z);

@@ -8,6 +8,7 @@ void fg_fractal_julia(vec3 p, vec4 c, float slice_w, int iterations, float bailo
     float bail2 = bailout * bailout;
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         if (r2 > bail2) break;
         // z^2 = (x^2 - |v|^2, 2 x v); its derivative grows by 2 |z|.
         // Capped below float32's overflow: an infinite dr would make bias * dr NaN at bias 0.

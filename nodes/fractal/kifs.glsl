@@ -10,6 +10,7 @@ void fg_fractal_kifs(vec3 p, float scale, vec3 offset, vec3 axis, float pre_angl
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         if (r2 > 1e4) break;
         z = fg_rotate_axis(z, a, pre);
         // The tetrahedron's three symmetry planes: reflect into the side of the (1, 1, 1) vertex.

@@ -6,6 +6,7 @@ void fg_fractal_kleinian(vec3 p, vec3 box_size, float inversion, vec3 shift, flo
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         // Box fold, then inversion in the sphere of squared radius `inversion` for points inside it.
         z = clamp(z, -box_size, box_size) * 2.0 - z;
         r2 = max(dot(z, z), 1e-12);

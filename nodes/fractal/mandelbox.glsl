@@ -9,6 +9,7 @@ void fg_fractal_mandelbox(vec3 p, float scale, float min_radius, float fixed_rad
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         if (r2 > 1e4) break;
         // Box fold: reflect each coordinate that leaves [-fold_limit, fold_limit].
         z = clamp(z, -fold_limit, fold_limit) * 2.0 - z;

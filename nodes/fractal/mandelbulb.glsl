@@ -6,6 +6,7 @@ void fg_fractal_mandelbulb(vec3 p, float power, int iterations, float bailout, f
     float r = length(z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r * r);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         // An orbit whose next radius would pass FG_RADIUS_MAX escapes in the next step anyway, and
         // the estimate is (nearly) the same one step earlier: stop before float overflows.
         float zr = pow(max(r, FG_TINY), power);

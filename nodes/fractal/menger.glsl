@@ -9,6 +9,7 @@ void fg_fractal_menger(vec3 p, float scale, vec3 offset, vec3 axis, float angle_
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
     for (int i = 0; i < iterations; i++) {
+        fg_count_fractal_iteration();
         if (r2 > 1e4) break;
         // Fold into the wedge x >= y >= z >= 0: abs and sorting are reflections, so distances survive.
         z = abs(z);

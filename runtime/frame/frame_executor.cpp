@@ -365,16 +365,19 @@ FrameStats FrameExecutor::run() {
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();
     const auto* counts = reinterpret_cast<const std::uint32_t*>(counters_->data());
-    std::uint64_t total = 0;
+    std::uint64_t total = 0, iterations = 0;
     for (std::size_t i = 0; i < graph_.counter_groups().size(); ++i) {
         const std::string& group = graph_.counter_groups()[i];
         const std::uint32_t* slot = counts + FG_COUNTER_WORDS * i;
         stats.evaluations[group] = slot[0];
         total += slot[0];
+        stats.iterations[group] = slot[5];
+        iterations += slot[5];
         if (slot[2] > 0) stats.lanes[group] = {slot[1], slot[2]};
         if (slot[3] > 0) stats.reuse_skipped[group] = slot[4] / 1000.0 / slot[3];
     }
     stats.evaluations_per_pixel = static_cast<double>(total) / (2.0 * graph_.width * graph_.height);
+    stats.iterations_per_pixel = static_cast<double>(iterations) / (2.0 * graph_.width * graph_.height);
     return stats;
 }
 

@@ -36,6 +36,8 @@ struct FrameStats {
     std::map<std::string, double> gpu_ms;              // per timer group, plus "frame"
     std::map<std::string, std::uint64_t> evaluations;  // per counter group (if counting)
     double evaluations_per_pixel = 0.0;                // all groups, per output pixel of both eyes
+    std::map<std::string, std::uint64_t> iterations;   // per counter group (if counting): fractal loop iterations
+    double iterations_per_pixel = 0.0;                 // all groups, per output pixel of both eyes
     std::map<std::string, LaneCount> lanes;            // per counter group (if counting)
     std::map<std::string, double> reuse_skipped;       // per counter group: the mean share of a ray reuse skipped
 };

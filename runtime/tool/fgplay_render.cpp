@@ -60,6 +60,12 @@ int render(const RenderOptions& o) {
             if (o.count) {
                 fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,
                            evals.empty() ? "" : evals.substr(1, evals.size() - 2));
+                std::string iterations;
+                for (const auto& [group, n] : r.stats.iterations)
+                    iterations += fmt::format(", {} {:.2f}", group, static_cast<double>(n) / (2.0 * o.width * o.height));
+                if (r.stats.iterations_per_pixel > 0.0)
+                    fmt::print("  fractal iterations per output pixel: {:.2f} ({})\n", r.stats.iterations_per_pixel,
+                               iterations.substr(2));
                 std::string lanes;
                 for (const auto& [group, count] : r.stats.lanes) lanes += fmt::format(", {} {:.2f}", group, count.efficiency());
                 if (!lanes.empty()) fmt::print("  SIMD lanes busy: {}\n", lanes.substr(2));

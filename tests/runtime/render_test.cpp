@@ -218,3 +218,32 @@ TEST_F(RuntimeTest, cone_marching_needs_fewer_evaluations_than_the_naive_tracer_
     // Reprojection's evaluations depend on the size and the view; the benchmark compares it.
     EXPECT_GT(reproject, 0.0);
 }
+
+// Each evaluation counts the iterations its fractal loop ran. The Kleinian never leaves its loop
+// early, so the count is exact; the bulb's escape-time loop leaves far from the set after a few
+// iterations and runs all of them near it, so the conemarch, which removes far evaluations and
+// keeps the last steps to the surface, runs more iterations per evaluation than the naive tracer.
+TEST_F(RuntimeTest, the_counting_frame_counts_the_iterations_of_the_fractal_loops) {
+    Scene kleinian{"kleinian", test::read_source_file("graphs/gallery/kleinian.json"), std::nullopt};
+    Pack klein = test::compile_pack(kleinian.graph);
+    const double loop = klein.manifest.find_spec("iterations.caves")->value;
+    for (StereoMode mode : {StereoMode::Naive, StereoMode::PerEye}) {
+        FrameStats stats = render(klein, kleinian, mode).frame.stats;
+        std::uint64_t evaluations = 0, iterations = 0;
+        for (const auto& [group, n] : stats.evaluations) evaluations += n;
+        for (const auto& [group, n] : stats.iterations) iterations += n;
+        EXPECT_GT(evaluations, 0u) << stereo_mode_name(mode);
+        EXPECT_EQ(iterations, evaluations * static_cast<std::uint64_t>(loop)) << stereo_mode_name(mode);
+    }
+
+    Scene filled = scenes()[2];
+    Pack bulb = test::compile_pack(filled.graph);
+    FrameStats naive = render(bulb, filled, StereoMode::Naive).frame.stats;
+    FrameStats cone = render(bulb, filled, StereoMode::PerEye).frame.stats;
+    const double naive_ratio = naive.iterations_per_pixel / naive.evaluations_per_pixel;
+    const double level0_ratio = static_cast<double>(cone.iterations.at("march.L0")) / cone.evaluations.at("march.L0");
+    RecordProperty("iterations", fmt::format("per evaluation: naive {:.2f}, per-eye level 0 {:.2f}", naive_ratio, level0_ratio));
+    EXPECT_GT(naive_ratio, 1.0);
+    EXPECT_LE(naive_ratio, bulb.manifest.find_spec("iterations.bulb")->value);
+    EXPECT_GT(level0_ratio, naive_ratio);
+}

@@ -29,8 +29,9 @@ const uint FG_PROJECTION_EQUIRECT = 1u;
 const uint FG_PROJECTION_ODS = 2u;
 
 // Words per counter slot in the counters buffer (march_counters.glsl): evaluations, busy and all
-// lane-iterations, rays cross-frame reuse could shorten, and the thousandths it skipped.
-const uint FG_COUNTER_WORDS = 5u;
+// lane-iterations, rays cross-frame reuse could shorten, the thousandths it skipped, and the
+// fractal iterations the evaluations ran.
+const uint FG_COUNTER_WORDS = 6u;
 
 // ODS fades the eyes' separation to none towards the poles (from 60 degrees of latitude to 90, a
 // smoothstep): near the zenith and nadir every column's eye looks at the same point from another
