@@ -1,6 +1,7 @@
 #include "fgplay_render.h"
 
 #include <filesystem>
+#include <map>
 #include <fmt/format.h>
 
 #include "command_outcome.h"
@@ -52,20 +53,21 @@ int render(const RenderOptions& o) {
             }
             std::string times;
             for (const auto& [group, ms] : r.stats.gpu_ms) times += fmt::format(" {} {:.2f} ms,", group, ms);
-            std::string evals;
-            for (const auto& [group, n] : r.stats.evaluations)
-                evals += fmt::format(" {} {:.2f},", group, static_cast<double>(n) / (2.0 * o.width * o.height));
+            // "march.L0 12.15, march.L1 1.96": a count per pass group, per output pixel of both eyes.
+            auto per_pixel = [&](const std::map<std::string, std::uint64_t>& counts) {
+                std::string list;
+                for (const auto& [group, n] : counts)
+                    list += fmt::format("{}{} {:.2f}", list.empty() ? "" : ", ", group, static_cast<double>(n) / (2.0 * o.width * o.height));
+                return list;
+            };
             fmt::print("frame {}: {} stereo {}x{} per eye; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height,
                        times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
             if (o.count) {
                 fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,
-                           evals.empty() ? "" : evals.substr(1, evals.size() - 2));
-                std::string iterations;
-                for (const auto& [group, n] : r.stats.iterations)
-                    iterations += fmt::format(", {} {:.2f}", group, static_cast<double>(n) / (2.0 * o.width * o.height));
+                           per_pixel(r.stats.evaluations));
                 if (r.stats.iterations_per_pixel > 0.0)
                     fmt::print("  fractal iterations per output pixel: {:.2f} ({})\n", r.stats.iterations_per_pixel,
-                               iterations.substr(2));
+                               per_pixel(r.stats.iterations));
                 std::string lanes;
                 for (const auto& [group, count] : r.stats.lanes) lanes += fmt::format(", {} {:.2f}", group, count.efficiency());
                 if (!lanes.empty()) fmt::print("  SIMD lanes busy: {}\n", lanes.substr(2));

@@ -15,20 +15,38 @@ using namespace fg;
 
 namespace {
 class EyeConeBound : public test::RuntimeTest {};
+
+constexpr std::uint32_t kSize = 48;
+
+// The bulb's filled view at 48x48 with four levels, cross-frame reuse on or off.
+struct EyeFrame {
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    HeadlessRenderer renderer;
+    RenderedFrame frame;
+    std::vector<std::byte> atlas;   // the left eye's levels
+
+    explicit EyeFrame(bool reuse) : renderer(test::shared_context(), pack, settings(reuse), {}) {
+        frame = renderer.render(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), 0.0);
+        atlas = renderer.executor().download("cone.left");
+    }
+    static FrameSettings settings(bool reuse) {
+        FrameSettings fs;
+        fs.width = fs.height = kSize;
+        fs.cone_levels = 4;
+        fs.knobs["reuse"] = reuse ? 1.0 : 0.0;
+        return fs;
+    }
+};
 }  // namespace
 
 TEST_F(EyeConeBound, level_0_of_an_eye_bounds_its_whole_pixel_cone_beyond_the_parent) {
-    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    EyeFrame e(true);
+    ASSERT_TRUE(e.renderer.executor().graph().reuse);
+    const Pack& pack = e.pack;
+    const RenderedFrame& frame = e.frame;
+    const auto& atlas = e.atlas;
+    HeadlessRenderer& r = e.renderer;
     auto cpu = test::cpu_scene(pack);
-    constexpr std::uint32_t kSize = 48;
-    FrameSettings fs;
-    fs.width = fs.height = kSize;
-    fs.cone_levels = 4;
-    fs.knobs["reuse"] = 1.0;
-    HeadlessRenderer r(test::shared_context(), pack, fs, {});
-    ASSERT_TRUE(r.executor().graph().reuse);
-    RenderedFrame frame = r.render(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), 0.0);
-    auto atlas = r.executor().download("cone.left");
     const View& view = r.views().left;
     ReferenceSettings rs;
     rs.step_scale = 0.5 * pack.manifest.find_spec("step_scale")->value;   // the strict reference's rule
@@ -65,15 +83,10 @@ TEST_F(EyeConeBound, level_0_of_an_eye_bounds_its_whole_pixel_cone_beyond_the_pa
 }
 
 TEST_F(EyeConeBound, without_reuse_an_eye_records_its_parents_bound) {
-    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
-    constexpr std::uint32_t kSize = 48;
-    FrameSettings fs;
-    fs.width = fs.height = kSize;
-    fs.cone_levels = 4;
-    HeadlessRenderer r(test::shared_context(), pack, fs, {});
-    ASSERT_FALSE(r.executor().graph().reuse);
-    RenderedFrame frame = r.render(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), 0.0);
-    auto atlas = r.executor().download("cone.left");
+    EyeFrame e(false);
+    ASSERT_FALSE(e.renderer.executor().graph().reuse);
+    const RenderedFrame& frame = e.frame;
+    const auto& atlas = e.atlas;
     std::size_t pixels = 0, parents = 0;
     for (std::uint32_t y = 0; y < kSize; ++y)
         for (std::uint32_t x = 0; x < kSize; ++x) {
