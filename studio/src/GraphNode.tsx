@@ -15,6 +15,7 @@ export interface GraphNodeData extends Record<string, unknown> {
   outputs: PortDef[];
   wired: Set<string>; // inputs fed by a wire
   diagnostics: { port?: string; diagnostic: Diagnostic }[];
+  previewSlot: boolean; // has a distance: room for its preview is kept, so arriving pictures move no handle
   preview?: string;
   onBinding: (port: string, value: Json | undefined) => void;
   onCode: (code: string[]) => void;
@@ -102,7 +103,11 @@ function GraphNodeView({ id: flowId, data, selected }: NodeProps<GraphFlowNode>)
         <span className="node-id">{data.title}</span>
         {data.doc && <span className="node-type">{data.doc.type}</span>}
       </div>
-      {data.preview && <img className="node-preview" src={data.preview} alt={`preview of ${id}`} data-testid={`preview-${id}`} />}
+      {data.preview ? (
+        <img className="node-preview" src={data.preview} alt={`preview of ${id}`} data-testid={`preview-${id}`} />
+      ) : (
+        data.previewSlot && <div className="node-preview pending" aria-hidden="true" />
+      )}
       <div className="ports">
         {data.outputs.map((p) => (
           <div className="port-row output" key={`o-${p.name}`} title={`${p.type}: ${p.doc}`}>

@@ -37,7 +37,8 @@ before(async () => {
       if (m) resolve(m[0]);
     });
     server.on("exit", (code) => reject(new Error(`fgplay studio exited with ${code}: ${out}`)));
-    setTimeout(() => reject(new Error(`no URL from fgplay studio: ${out}`)), 60000);
+    // unref: a pending timer would keep node running for its full minute after the tests end.
+    setTimeout(() => reject(new Error(`no URL from fgplay studio: ${out}`)), 60000).unref();
   });
   browser = await puppeteer.launch({
     executablePath: env("CHROMIUM"),
@@ -123,6 +124,18 @@ async function drag(from, to) {
   await page.mouse.up();
 }
 
+// A wire drawn by dragging; on a loaded machine a late re-layout can still move a handle under the
+// mouse, so a drag that left no wire is made once more when the page is idle.
+async function wire(fromNode, fromPort, toNode, toPort) {
+  const edge = `.react-flow__edge[data-testid="rf__edge-${fromNode}.${fromPort}->${toNode}.${toPort}"]`;
+  for (let attempt = 0; ; ++attempt) {
+    if (attempt > 0) await idle();
+    await drag(handle(fromNode, "source", fromPort), handle(toNode, "target", toPort));
+    const made = await page.waitForSelector(edge, { timeout: 10000 }).catch((e) => (attempt > 0 ? Promise.reject(e) : null));
+    if (made) return;
+  }
+}
+
 const handle = (node, side, port) => `[data-testid="node-${node}"] .react-flow__handle.${side}[data-handleid="${port}"]`;
 
 async function setLiteral(node, port, text) {
@@ -170,13 +183,12 @@ test("the studio edits a graph with a live preview", async (t) => {
     await page.click('[data-testid="palette-op.round"]');
     await page.waitForSelector('[data-testid="node-round"]');
     await new Promise((r) => setTimeout(r, 500));
-    await drag(handle("bulb", "source", "distance"), handle("round", "target", "d"));
-    await page.waitForSelector(`.react-flow__edge[data-testid="rf__edge-bulb.distance->round.d"]`, { timeout: 10000 });
-    await drag(handle("round", "source", "distance"), handle("__outputs__", "target", "distance"));
-    await page.waitForSelector(`.react-flow__edge[data-testid="rf__edge-round.distance->__outputs__.distance"]`, { timeout: 10000 });
+    await wire("bulb", "distance", "round", "d");
+    await wire("round", "distance", "__outputs__", "distance");
     await setLiteral("round", "radius", "0.08");
     frame = await waitForPreview(frame);
     await idle();
+    await page.waitForSelector('[data-testid="preview-round"]', { timeout: 60000 });
     await page.screenshot({ path: path.join(shots, "node_added.png") });
   });
 
