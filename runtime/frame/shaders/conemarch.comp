@@ -134,16 +134,18 @@ float fg_cover(inout FgFineRay r, float d)
     return d;
 }
 
+// Hands a ray that is still marching after FG_TAIL_AFTER steps to the tail pass.
+void fg_fine_defer(inout FgFineRay r)
+{
+    r.deferred = true;
+    // Every step so far kept the cone safe if the bound is still open.
+    r.bound = min(r.bound, r.t);
+    fg_tail_append(r.pixel, r.t, r.closest, uint(r.i));
+    r.marching = false;
+}
+
 void fg_fine_step(inout FgFineRay r)
 {
-    if (fg_defer(r.i)) {
-        r.deferred = true;
-        // Every step so far kept the cone safe if the bound is still open.
-        r.bound = min(r.bound, r.t);
-        fg_tail_append(r.pixel, r.t, r.closest, uint(r.i));
-        r.marching = false;
-        return;
-    }
     float d = fg_scene_distance(r.ro + r.rd * r.t) * FG_STEP_SCALE;
     fg_evaluations++;
     // Over-relaxation (Keinert et al.): if the spheres stop overlapping, step back. The knob is a
@@ -162,7 +164,8 @@ void fg_fine_step(inout FgFineRay r)
     r.closest = min(r.closest, FG_REUSE ? fg_cover(r, d) : d);
     float radius = r.cone * r.t;
     // Until the centre eye's cone touches, its steps stay safe for the whole cone, so `bound` is a
-    // lower bound for every ray of the pixel (pc.view is uniform: a real branch, not a masked one).
+    // lower bound for every ray of the pixel. llvmpipe runs this in the eyes too (it masks every
+    // branch, uniform ones included: docs/accuracy.md), about 2 % of an eye's instructions.
     bool cone_safe = false;
     if (pc.view == FG_VIEW_CENTRE) {
         if (r.bound > r.range.y && d <= FG_CONE_STOP * radius) r.bound = r.t;
@@ -279,10 +282,13 @@ void main()
         fg_march_cone(pixel, rect, ro, rd, parent, spread);
     } else {
         FgFineRay r = fg_fine_begin(pixel, full);
-        while (r.marching) {
+        // The deferral comes after the loop, not in its step: llvmpipe runs every branch of a loop's
+        // body in all lanes, taken or not, so an append in the step costs its atomics every step.
+        while (r.marching && !fg_defer(r.i)) {
             fg_count_iteration(true);
             fg_fine_step(r);
         }
+        if (r.marching) fg_fine_defer(r);
         fg_fine_finish(r);
     }
     fg_count_flush(pc.counter_slot, fg_evaluations);
