@@ -15,7 +15,6 @@ export interface GraphNodeData extends Record<string, unknown> {
   outputs: PortDef[];
   wired: Set<string>; // inputs fed by a wire
   diagnostics: { port?: string; diagnostic: Diagnostic }[];
-  previewSlot: boolean; // has a distance: room for its preview is kept, so arriving pictures move no handle
   preview?: string;
   onBinding: (port: string, value: Json | undefined) => void;
   onCode: (code: string[]) => void;
@@ -96,6 +95,8 @@ function GraphNodeView({ id: flowId, data, selected }: NodeProps<GraphFlowNode>)
   for (const d of data.diagnostics) if (d.port && d.diagnostic.severity === "error") portErrors.set(d.port, d.diagnostic.message);
   const hasError = data.diagnostics.some((d) => d.diagnostic.severity === "error");
   const inputs = data.doc?.inputs ?? {};
+  // A node with a distance keeps room for its preview before the picture arrives: nothing moves under a drag.
+  const hasPreview = data.outputs.some((p) => p.name === "distance");
   const code = data.doc?.type === "custom.glsl" ? (Array.isArray(data.doc.code) ? (data.doc.code as string[]) : [String(data.doc.code ?? "")]) : null;
   return (
     <div className={`graph-node${hasError ? " has-error" : ""}${selected ? " selected" : ""}${data.doc ? "" : " outputs-node"}`} data-testid={`node-${id}`}>
@@ -106,7 +107,7 @@ function GraphNodeView({ id: flowId, data, selected }: NodeProps<GraphFlowNode>)
       {data.preview ? (
         <img className="node-preview" src={data.preview} alt={`preview of ${id}`} data-testid={`preview-${id}`} />
       ) : (
-        data.previewSlot && <div className="node-preview pending" aria-hidden="true" />
+        hasPreview && <div className="node-preview pending" aria-hidden="true" />
       )}
       <div className="ports">
         {data.outputs.map((p) => (

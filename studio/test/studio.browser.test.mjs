@@ -128,12 +128,12 @@ async function drag(from, to) {
 // mouse, so a drag that left no wire is made once more when the page is idle.
 async function wire(fromNode, fromPort, toNode, toPort) {
   const edge = `.react-flow__edge[data-testid="rf__edge-${fromNode}.${fromPort}->${toNode}.${toPort}"]`;
-  for (let attempt = 0; ; ++attempt) {
+  for (let attempt = 0; attempt < 2; ++attempt) {
     if (attempt > 0) await idle();
     await drag(handle(fromNode, "source", fromPort), handle(toNode, "target", toPort));
-    const made = await page.waitForSelector(edge, { timeout: 10000 }).catch((e) => (attempt > 0 ? Promise.reject(e) : null));
-    if (made) return;
+    if (await page.waitForSelector(edge, { timeout: 10000 }).catch(() => null)) return;
   }
+  throw new Error(`no wire ${fromNode}.${fromPort} -> ${toNode}.${toPort} after two drags`);
 }
 
 const handle = (node, side, port) => `[data-testid="node-${node}"] .react-flow__handle.${side}[data-handleid="${port}"]`;
