@@ -12,6 +12,7 @@
 #include "analysis/precision_advice.h"
 #include "analysis/specialization.h"
 #include "codegen/scene_codegen.h"
+#include "common/spec_constants.h"
 #include "graph/graph_loader.h"
 #include "ir/ir_builder.h"
 #include "pack/pack_chunk.h"
@@ -196,7 +197,8 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
         mp.local_size = refl.local_size;
         mp.bindings = refl.bindings;
         mp.push_constant_size = refl.push_constant_size;
-        mp.spec_constants = refl.spec_constants;
+        for (std::uint32_t id : refl.spec_constants)
+            (is_dispatch_constant(id) ? mp.dispatch_constants : mp.spec_constants).push_back(id);
         for (const auto& [block, layout] : refl.uniform_blocks) m.uniform_blocks[block] = layout.size;
         if (auto it = refl.uniform_blocks.find("FgParams"); it != refl.uniform_blocks.end()) {
             // Reflection and our own std140 layout must agree, or the runtime would write wrong bytes.

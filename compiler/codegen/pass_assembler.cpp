@@ -114,6 +114,8 @@ AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, 
         if (k.type == ValueType::Bool) value = v != 0 ? "true" : "false";
         w.line(fmt::format("layout(constant_id = {}) const {} {} = {};", k.id, type_name(k.type), k.glsl, value), gen);
     }
+    for (const auto& c : kDispatchConstants)
+        w.line(fmt::format("layout(constant_id = {}) const int {} = -1;   // {}", c.id, c.glsl, c.doc), gen);
     w.blank();
     SourceOrigin common;
     common.kind = SourceOrigin::Kind::Template;

@@ -64,6 +64,30 @@ inline constexpr std::array<GlobalKnob, 18> kGlobalKnobs{{
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;
 
+// Dispatch constants: not knobs, and not in the manifest's list of them. The runtime fixes them per
+// pipeline from the frame graph: what a pass would otherwise read from its push constants or the
+// frame's uniforms. A CPU rasteriser runs both sides of every branch, uniform ones included
+// (docs/accuracy.md), so only a constant known when the pipeline is made drops the code of the
+// cases a dispatch never runs. -1, the default, leaves the shader reading the value itself.
+struct DispatchConstant {
+    std::uint32_t id;
+    std::string_view glsl;
+    std::string_view doc;
+};
+
+inline constexpr DispatchConstant kSpecProjection{60, "FG_SPEC_PROJECTION", "the frame's projection (fg_frame.projection)"};
+inline constexpr DispatchConstant kSpecCentreView{61, "FG_SPEC_CENTRE_VIEW", "1: the pass marches the centre view, 0: an eye"};
+inline constexpr DispatchConstant kSpecFullResolution{62, "FG_SPEC_FULL_RESOLUTION",
+                                                      "1: conemarch level 0, 0: a coarse level"};
+inline constexpr std::array<DispatchConstant, 3> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution};
+static_assert(kGlobalKnobs.back().id < kSpecProjection.id, "global knob ids would run into the dispatch constants'");
+
+inline bool is_dispatch_constant(std::uint32_t id) {
+    for (const auto& c : kDispatchConstants)
+        if (c.id == id) return true;
+    return false;
+}
+
 inline const GlobalKnob* find_global_knob(std::string_view name) {
     for (const auto& k : kGlobalKnobs)
         if (k.name == name) return &k;

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "common/json_fields.h"
+#include "common/spec_constants.h"
 
 namespace fg {
 
@@ -100,6 +101,7 @@ json manifest_to_json(const PackManifest& m) {
                 {"local_size", p.local_size},
                 {"push_constant_size", p.push_constant_size},
                 {"spec_constants", p.spec_constants},
+                {"dispatch_constants", p.dispatch_constants},
                 {"bindings", json::array()}};
         for (const auto& b : p.bindings)
             pj["bindings"].push_back(
@@ -208,6 +210,16 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
                 if (!r.read((*sc)[k], at, id)) continue;
                 if (!m.find_spec(id)) r.error("refers to a specialization constant the manifest does not list", at);
                 else p.spec_constants.push_back(id);
+            }
+        }
+        // Optional: a pack from an older fgc has none, and its passes read those values themselves.
+        if (const json* dc = r.array_field(pj, "dispatch_constants", ptr)) {
+            for (std::size_t k = 0; k < dc->size(); ++k) {
+                std::string at = fmt::format("{}/dispatch_constants/{}", ptr, k);
+                std::uint32_t id = 0;
+                if (!r.read((*dc)[k], at, id)) continue;
+                if (!is_dispatch_constant(id)) r.error("is not a dispatch constant of this runtime (recompile the pack)", at);
+                else p.dispatch_constants.push_back(id);
             }
         }
         r.each_object(pj, "bindings", ptr, [&](const json& bj, const std::string& bp) {

@@ -54,7 +54,8 @@ struct ManifestPass {
     std::array<std::uint32_t, 3> local_size{1, 1, 1};
     std::vector<ManifestBinding> bindings;
     std::uint32_t push_constant_size = 0;
-    std::vector<std::uint32_t> spec_constants;         // ids the pass's SPIR-V declares
+    std::vector<std::uint32_t> spec_constants;         // knob ids the pass's SPIR-V declares
+    std::vector<std::uint32_t> dispatch_constants;     // and dispatch constant ids (common/spec_constants.h)
 };
 
 struct ManifestFractal {

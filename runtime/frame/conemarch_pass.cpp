@@ -2,6 +2,7 @@
 // level, coarse to fine, into one atlas image per view; level 0 also writes the view's depth.
 #include <fmt/format.h>
 
+#include "common/spec_constants.h"
 #include "frame_graph.h"
 #include "resolve_pass.h"
 
@@ -63,6 +64,10 @@ void add_view(FrameGraph& g, int view) {
         p.persistent_lanes = k == 0 && g.persistent_lanes;
         p.counter_slot = g.counter_slot(fmt::format("march.L{}", k));
         p.set_push(ConemarchPush{view, static_cast<std::int32_t>(k), k + 1 == levels ? 1 : 0, p.counter_slot, stride});
+        // The coarse and the full-resolution march, the centre view's and an eye's, are separate
+        // pipelines: one shader would run both cases on a CPU rasteriser.
+        p.specialize[kSpecFullResolution.id] = k == 0 ? 1 : 0;
+        p.specialize[kSpecCentreView.id] = centre ? 1 : 0;
         return p;
     };
     for (std::uint32_t k = levels; k-- > 1;) {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <stdexcept>
 
+#include "common/spec_constants.h"
 #include "vk/commands.h"
 #include "vk/timestamp_queries.h"
 
@@ -72,6 +73,13 @@ vk::SpecializationValues specialization_for(const PackManifest& m, const Manifes
     return values;
 }
 
+// The pipeline a pass runs: its program, specialized by the dispatch constants it fixes.
+std::string FrameExecutor::program_key(const FramePass& pass) {
+    std::string key = pass.program;
+    for (const auto& [id, value] : pass.specialize) key += fmt::format(" {}={}", id, value);
+    return key;
+}
+
 FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph)
     : ctx_(ctx), manifest_(pack.manifest), graph_(std::move(graph)), batches_(graph_.batches()) {
     auto check_block = [&](const char* name, std::size_t size) {
@@ -101,7 +109,8 @@ FrameExecutor::~FrameExecutor() = default;
 
 void FrameExecutor::make_programs(const Pack& pack) {
     for (const auto& pass : graph_.passes()) {
-        if (programs_.count(pass.program)) continue;
+        std::string key = program_key(pass);
+        if (programs_.count(key)) continue;
         const ManifestPass* mp = manifest_.find_pass(pass.program);
         if (!mp) throw std::runtime_error(fmt::format("the pack has no '{}' pass", pass.program));
         std::vector<vk::DescriptorBinding> bindings;
@@ -113,19 +122,25 @@ void FrameExecutor::make_programs(const Pack& pack) {
         prog.manifest = mp;
         prog.layout = std::make_unique<vk::DescriptorSetLayout>(ctx_, bindings);
         auto spec = specialization_for(manifest_, *mp, graph_.settings.knobs, graph_.settings.count_evaluations);
+        for (std::uint32_t id : mp->dispatch_constants) {
+            if (id == kSpecProjection.id) spec.set(id, static_cast<std::int32_t>(graph_.settings.projection));
+            if (auto it = pass.specialize.find(id); it != pass.specialize.end()) spec.set(id, it->second);
+        }
         prog.pipeline = std::make_unique<vk::ComputePipeline>(ctx_, pack.spirv.at(mp->name),
                                                               std::vector<VkDescriptorSetLayout>{prog.layout->handle()},
                                                               mp->push_constant_size, spec);
-        programs_[pass.program] = std::move(prog);
+        programs_[key] = std::move(prog);
     }
+    for (const auto& pass : graph_.passes()) pass_programs_.push_back(&programs_.at(program_key(pass)));
 }
 
 // The declarations drive the barriers, so they must say what the shaders do: every resource a
 // shader reads is declared read (or written), every one it writes is declared written, and the push
 // constants are exactly the shader's block.
 void FrameExecutor::check_declarations() const {
-    for (const auto& pass : graph_.passes()) {
-        const ManifestPass& mp = *programs_.at(pass.program).manifest;
+    for (std::size_t i = 0; i < graph_.passes().size(); ++i) {
+        const FramePass& pass = graph_.passes()[i];
+        const ManifestPass& mp = *pass_programs_[i]->manifest;
         if (pass.push.size() != mp.push_constant_size)
             throw std::runtime_error(fmt::format("pass {} pushes {} bytes of constants, and its shader's block is {} bytes: "
                                                  "the runtime and the pack disagree (recompile the pack with this fgc)",
@@ -195,13 +210,14 @@ void FrameExecutor::make_descriptor_sets() {
     std::vector<VkDescriptorPoolSize> sizes = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
                                                {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
-    for (const auto& pass : graph_.passes())
-        for (const auto& b : programs_.at(pass.program).manifest->bindings)
+    for (const Program* prog : pass_programs_)
+        for (const auto& b : prog->manifest->bindings)
             for (auto& s : sizes)
                 if (s.type == descriptor_type(b.kind)) s.descriptorCount += 2;
     pool_ = std::make_unique<vk::DescriptorPool>(ctx_, static_cast<std::uint32_t>(2 * graph_.passes().size()), sizes);
-    for (const auto& pass : graph_.passes()) {
-        const Program& prog = programs_.at(pass.program);
+    for (std::size_t i = 0; i < graph_.passes().size(); ++i) {
+        const FramePass& pass = graph_.passes()[i];
+        const Program& prog = *pass_programs_[i];
         std::array<VkDescriptorSet, 2> sets{};
         for (std::uint64_t parity = 0; parity < 2; ++parity) {
             VkDescriptorSet set = sets[parity] = pool_->allocate(*prog.layout);
@@ -234,6 +250,11 @@ void FrameExecutor::make_descriptor_sets() {
 }
 
 void FrameExecutor::set_frame(const GpuFrame& frame) {
+    // The pipelines were specialized for the graph's projection (kSpecProjection).
+    if (frame.projection != static_cast<std::uint32_t>(graph_.settings.projection))
+        throw std::logic_error(fmt::format("a frame in projection {} for pipelines made for projection {}: build the "
+                                           "executor for the projection it renders",
+                                           frame.projection, static_cast<int>(graph_.settings.projection)));
     frame_data_ = frame;
     frame_data_.previous[0] = previous_views_[0];
     frame_data_.previous[1] = previous_views_[1];
@@ -331,7 +352,7 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
         if (batch > 0) vk::memory_barrier(cmd, kPassAccess, kPassAccess);
         for (std::size_t i : batches_[batch]) {
             const auto& pass = graph_.passes()[i];
-            const Program& prog = programs_.at(pass.program);
+            const Program& prog = *pass_programs_[i];
             VkDescriptorSet set = sets_[i][frames_run_ % 2];
             if (timer) timer->begin(cmd, pass.timer);
             if (pass.indirect.empty()) {

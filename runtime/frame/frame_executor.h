@@ -73,6 +73,7 @@ private:
         std::unique_ptr<vk::ComputePipeline> pipeline;
         const ManifestPass* manifest = nullptr;
     };
+    static std::string program_key(const FramePass& pass);
     void make_programs(const Pack& pack);
     void check_declarations() const;
     void make_resources();
@@ -86,7 +87,8 @@ private:
     const PackManifest manifest_;
     FrameGraph graph_;
     std::vector<std::vector<std::size_t>> batches_;
-    std::map<std::string, Program> programs_;
+    std::map<std::string, Program> programs_;   // by program_key
+    std::vector<const Program*> pass_programs_;  // each pass's, by index
     std::map<std::string, std::vector<std::unique_ptr<vk::StorageImage>>> images_;   // two for history images
     std::map<std::string, std::unique_ptr<vk::Buffer>> buffers_;
     std::unique_ptr<vk::Buffer> frame_, scene_, params_, counters_;

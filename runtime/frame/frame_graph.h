@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -63,6 +64,9 @@ struct FramePass {
     bool persistent_lanes = false;
     std::string indirect;              // buffer whose first three words are the group counts (read)
     std::int32_t counter_slot = -1;    // evaluation counter slot, -1 if the pass evaluates nothing
+    // Dispatch constants (common/spec_constants.h) this pass fixes, by id: passes of one program
+    // with different values get their own pipelines. The executor adds the frame's projection.
+    std::map<std::uint32_t, std::int32_t> specialize;
 
     // Binds `resource` to the shader's `binding` and declares the access.
     void bind(const std::string& binding, const std::string& resource, Access access);

@@ -529,6 +529,19 @@ TEST(Pack, a_pass_referring_to_an_unlisted_specialization_constant_is_refused) {
     EXPECT_TRUE(has_error(r, "refers to a specialization constant the manifest does not list")) << r.text();
 }
 
+TEST(Pack, a_pass_listing_an_unknown_dispatch_constant_is_refused_and_one_without_any_reads) {
+    auto m = tiny_manifest();
+    auto j = manifest_to_json(m);
+    j["passes"][0].erase("dispatch_constants");   // as an older fgc wrote it
+    EXPECT_TRUE(read_ok(make_pack(j, kTinyGraph, {"main"})));
+    j["passes"][0]["dispatch_constants"] = {kSpecProjection.id, 59};
+    auto r = read_expecting_refusal(make_pack(j, kTinyGraph, {"main"}));
+    EXPECT_TRUE(has_error(r, "is not a dispatch constant of this runtime")) << r.text();
+    bool pointer = false;
+    for (const auto& d : r.diag.items()) pointer |= d.pointer == "/manifest/passes/0/dispatch_constants/1";
+    EXPECT_TRUE(pointer) << r.text();
+}
+
 TEST(Pack, an_unknown_chunk_tag_in_a_1_0_pack_is_refused_but_skipped_in_a_newer_minor_version) {
     PackWriter w;
     w.add(std::make_unique<ManifestChunk>(manifest_to_json(tiny_manifest())));
@@ -635,9 +648,12 @@ TEST(Pack, the_manifest_written_by_the_compiler_lists_every_specialization_const
             EXPECT_TRUE(m.find_spec(id)) << "pass " << p.name << " uses id " << id << " which the manifest lacks";
             EXPECT_NE(id, 0u) << p.name;
         }
-        // What the manifest says each pass declares is what its SPIR-V declares.
+        for (auto id : p.dispatch_constants) EXPECT_TRUE(is_dispatch_constant(id)) << p.name << " id " << id;
+        // What the manifest says each pass declares is what its SPIR-V declares: knobs and dispatch
+        // constants.
         auto declared = declared_spec_ids(pack->spirv.at(p.name));
         std::set<std::uint32_t> listed(p.spec_constants.begin(), p.spec_constants.end());
+        listed.insert(p.dispatch_constants.begin(), p.dispatch_constants.end());
         EXPECT_EQ(listed, declared) << "pass " << p.name;
         any |= !declared.empty();
     }

@@ -55,7 +55,7 @@ void main()
     imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
     // Camera depth: along the view axis in perspective, along the ray in a panorama; metres.
     GpuView v = fg_frame.views[pc.view];
-    float along = fg_frame.projection == FG_PROJECTION_PERSPECTIVE ? t * dot(rd, v.forward.xyz) : t;
+    float along = fg_projection() == FG_PROJECTION_PERSPECTIVE ? t * dot(rd, v.forward.xyz) : t;
 #ifdef FG_DOUBLE_SCENE
     vec3 world = vec3(fg_anchor() + dvec3(p));
 #else

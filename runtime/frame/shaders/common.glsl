@@ -22,10 +22,17 @@ vec3 fg_bounds_centre()
 #endif
 }
 
-// How a pixel becomes a ray (fg_frame.projection, the same for every pass of a frame): the view's
+// How a pixel becomes a ray (fg_projection(), the same for every pass of a frame): the view's
 // perspective frustum (the headset), or offline panoramas: equirectangular around the view's
 // origin, and omni-directional stereo (ODS), where each column's eye sits on the circle of the
 // interpupillary distance, looking along the tangent, as 360-degree stereo video players expect.
+
+// The frame's projection: a dispatch constant where the runtime fixed it (the code of the other
+// projections is then dropped; a CPU rasteriser would run it all), else the frame's field.
+uint fg_projection()
+{
+    return FG_SPEC_PROJECTION >= 0 ? uint(FG_SPEC_PROJECTION) : fg_frame.projection;
+}
 
 // Longitude (0 straight ahead, positive to the right) and latitude (positive up) of a panorama's
 // uv in [0, 1]^2, y down.
@@ -38,7 +45,7 @@ vec2 fg_panorama_angles(vec2 uv)
 vec3 fg_ray_dir(int view, vec2 uv)
 {
     GpuView v = fg_frame.views[view];
-    if (fg_frame.projection != FG_PROJECTION_PERSPECTIVE) {
+    if (fg_projection() != FG_PROJECTION_PERSPECTIVE) {
         vec2 a = fg_panorama_angles(uv);
         return cos(a.y) * (sin(a.x) * v.right.xyz + cos(a.x) * v.forward.xyz) + sin(a.y) * v.up.xyz;
     }
@@ -59,7 +66,7 @@ float fg_ods_separation(float lat)
 vec3 fg_ray_origin(int view, vec2 uv)
 {
     GpuView v = fg_frame.views[view];
-    if (fg_frame.projection == FG_PROJECTION_ODS && view != FG_VIEW_CENTRE) {
+    if (fg_projection() == FG_PROJECTION_ODS && view != FG_VIEW_CENTRE) {
         vec2 a = fg_panorama_angles(uv);
         float side = (view == FG_VIEW_LEFT ? -0.5 : 0.5) * fg_ods_separation(a.y);
         return v.origin.xyz + side * fg_frame.ipd * (cos(a.x) * v.right.xyz - sin(a.x) * v.forward.xyz);
@@ -116,7 +123,7 @@ ivec2 fg_view_size(int view)
 // covers the rays of every eye.
 float fg_origin_spread(int view, int level)
 {
-    if (fg_frame.projection != FG_PROJECTION_ODS || view == FG_VIEW_CENTRE) return 0.0;
+    if (fg_projection() != FG_PROJECTION_ODS || view == FG_VIEW_CENTRE) return 0.0;
     vec2 size = vec2(fg_view_size(view));
     float along = 3.14159265 * float(1 << level) / size.x;
     float across = 1.5 / FG_ODS_FADE_WIDTH * 0.5 * 3.14159265 * float(1 << level) / size.y;

@@ -27,6 +27,11 @@ layout(set = 0, binding = 6, r32f) uniform writeonly image2D fg_glow;      // le
 #endif
 layout(push_constant) uniform FgConePush { ConemarchPush pc; };
 
+// What this dispatch marches: the runtime makes one pipeline per level kind and view kind
+// (dispatch constants), so each runs only its own code; -1 reads the push constants.
+bool fg_full_resolution() { return FG_SPEC_FULL_RESOLUTION >= 0 ? FG_SPEC_FULL_RESOLUTION == 1 : pc.level == 0; }
+bool fg_centre_dispatch() { return FG_SPEC_CENTRE_VIEW >= 0 ? FG_SPEC_CENTRE_VIEW == 1 : pc.view == FG_VIEW_CENTRE; }
+
 // Full resolution with FG_TAIL_AFTER > 0: a pixel still marching after that many steps goes to
 // the tail queue (tail.comp finishes it).
 bool fg_defer(int step) { return FG_TAIL_AFTER > 0 && step == FG_TAIL_AFTER; }
@@ -109,7 +114,7 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
     r.resumed = r.t;
     // An eye's march keeps its cone safe for no step (fg_cover certifies the cone instead): its bound
     // closes where it starts. The centre eye's stays open until its cone may touch.
-    r.bound = pc.view == FG_VIEW_CENTRE ? fg_escaped() : r.t;
+    r.bound = fg_centre_dispatch() ? fg_escaped() : r.t;
     r.closest = 1e30;
     r.previous = 0.0;
     r.step = 0.0;
@@ -164,10 +169,9 @@ void fg_fine_step(inout FgFineRay r)
     r.closest = min(r.closest, FG_REUSE ? fg_cover(r, d) : d);
     float radius = r.cone * r.t;
     // Until the centre eye's cone touches, its steps stay safe for the whole cone, so `bound` is a
-    // lower bound for every ray of the pixel. llvmpipe runs this in the eyes too (it masks every
-    // branch, uniform ones included: docs/accuracy.md), about 2 % of an eye's instructions.
+    // lower bound for every ray of the pixel. The eyes' pipelines drop this code.
     bool cone_safe = false;
-    if (pc.view == FG_VIEW_CENTRE) {
+    if (fg_centre_dispatch()) {
         if (r.bound > r.range.y && d <= FG_CONE_STOP * radius) r.bound = r.t;
         cone_safe = r.bound > r.range.y;
     }
@@ -186,7 +190,7 @@ void fg_fine_step(inout FgFineRay r)
 void fg_fine_finish(FgFineRay r)
 {
     float result = FG_MISS;
-    float bound = pc.view == FG_VIEW_CENTRE ? r.bound : r.covered;
+    float bound = fg_centre_dispatch() ? r.bound : r.covered;
     bool capped = !r.hit && !r.escaped && !r.deferred && r.i == FG_FINE_STEPS;
     if (r.hit || (capped && !FG_MISS_ON_STEP_CAP)) result = r.t;
     if (result != FG_MISS) bound = min(bound, result);
@@ -210,11 +214,11 @@ bool fg_skip_outside_lens(ivec2 pixel, ivec4 rect, ivec2 full)
 {
     float block = float(1 << pc.level);
     vec2 centre = (vec2(pixel) + 0.5) * block;
-    if (!fg_outside_lens(pc.view, centre / vec2(full), vec2(pc.level == 0 ? 0.0 : block) / vec2(full))) return false;
+    if (!fg_outside_lens(pc.view, centre / vec2(full), vec2(fg_full_resolution() ? 0.0 : block) / vec2(full))) return false;
     // y: children of a hidden block are hidden too and never read it; a later frame's reuse must not
     // take a cell that was never marched as empty.
-    imageStore(fg_levels, rect.xy + pixel, vec4(pc.level == 0 ? FG_MISS : fg_escaped(), 0.0, 0.0, 0.0));
-    if (pc.level == 0) {
+    imageStore(fg_levels, rect.xy + pixel, vec4(fg_full_resolution() ? FG_MISS : fg_escaped(), 0.0, 0.0, 0.0));
+    if (fg_full_resolution()) {
         imageStore(fg_depth, pixel, vec4(FG_MISS));
 #ifdef FG_HAS_GLOW
         imageStore(fg_glow, pixel, vec4(1e30));
@@ -261,17 +265,17 @@ void fg_fine_persistent(ivec2 size)
 void main()
 {
     ivec2 full = fg_view_size(pc.view);
-    if (pc.level == 0 && FG_PERSISTENT_LANES) {
+    if (fg_full_resolution() && FG_PERSISTENT_LANES) {
         fg_fine_persistent(full);
         fg_count_flush(pc.counter_slot, fg_evaluations);
         return;
     }
-    ivec4 rect = fg_level_rect(pc.level, full);
+    ivec4 rect = fg_level_rect(fg_full_resolution() ? 0 : pc.level, full);
     ivec2 pixel = fg_invocation_cell() * pc.stride;
     if (pixel.x >= rect.z || pixel.y >= rect.w) return;
-    if (pc.level == 0 && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    if (fg_full_resolution() && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_skip_outside_lens(pixel, rect, full)) return;
-    if (pc.level > 0) {
+    if (!fg_full_resolution()) {
         float block = float(1 << pc.level);
         vec2 uv = (vec2(pixel) + 0.5) * block / vec2(full);
         vec3 ro = fg_ray_origin(pc.view, uv);

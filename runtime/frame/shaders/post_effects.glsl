@@ -14,7 +14,7 @@ vec3 fg_post_effects(vec3 color, ivec2 pixel, ivec2 size, float t, float closest
 #endif
 #ifdef FG_HAS_VIGNETTE
     // A comfort effect of the headset's frustum; a panorama has no edges to darken.
-    if (fg_frame.projection == FG_PROJECTION_PERSPECTIVE) {
+    if (fg_projection() == FG_PROJECTION_PERSPECTIVE) {
         vec2 q = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
         color *= 1.0 - fg_scene.vignette * smoothstep(0.3, 1.4, dot(q, q));
     }

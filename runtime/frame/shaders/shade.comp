@@ -50,7 +50,7 @@ bool fg_shaded_pixel_of(int eye, GpuView o, vec3 p, out ivec2 at)
 // other eye's direction: the benchmark measures what that costs.
 bool fg_reuse_other_eye(vec3 p, out vec4 color)
 {
-    if (fg_frame.projection != FG_PROJECTION_PERSPECTIVE) return false;
+    if (fg_projection() != FG_PROJECTION_PERSPECTIVE) return false;
     int other = 1 - pc.view;
     GpuView o = fg_frame.views[other];
     ivec2 at;
