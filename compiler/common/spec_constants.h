@@ -79,7 +79,10 @@ inline constexpr DispatchConstant kSpecProjection{60, "FG_SPEC_PROJECTION", "the
 inline constexpr DispatchConstant kSpecCentreView{61, "FG_SPEC_CENTRE_VIEW", "1: the pass marches the centre view, 0: an eye"};
 inline constexpr DispatchConstant kSpecFullResolution{62, "FG_SPEC_FULL_RESOLUTION",
                                                       "1: conemarch level 0, 0: a coarse level"};
-inline constexpr std::array<DispatchConstant, 3> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution};
+inline constexpr DispatchConstant kSpecFoveaWindow{
+    63, "FG_SPEC_FOVEA_WINDOW", "1: a foveated eye's full-resolution dispatch covers the fovea's window, not the image"};
+inline constexpr std::array<DispatchConstant, 4> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution,
+                                                                    kSpecFoveaWindow};
 static_assert(kGlobalKnobs.back().id < kSpecProjection.id, "global knob ids would run into the dispatch constants'");
 
 inline bool is_dispatch_constant(std::uint32_t id) {

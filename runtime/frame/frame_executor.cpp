@@ -145,6 +145,11 @@ void FrameExecutor::check_declarations() const {
             throw std::runtime_error(fmt::format("pass {} pushes {} bytes of constants, and its shader's block is {} bytes: "
                                                  "the runtime and the pack disagree (recompile the pack with this fgc)",
                                                  pass.label, pass.push.size(), mp.push_constant_size));
+        // fg_dispatch_pixel places the fovea's window from the group count in 8x8 workgroups.
+        if (pass.specialize.count(kSpecFoveaWindow.id) && (mp.local_size[0] != 8 || mp.local_size[1] != 8))
+            throw std::runtime_error(fmt::format("pass {} dispatches the fovea's window with {}x{} workgroups: its shader "
+                                                 "needs 8x8",
+                                                 pass.label, mp.local_size[0], mp.local_size[1]));
         for (const auto& b : mp.bindings) {
             std::string resource;
             for (const auto& [name, res] : pass.bindings)
@@ -354,14 +359,15 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
             const auto& pass = graph_.passes()[i];
             const Program& prog = *pass_programs_[i];
             VkDescriptorSet set = sets_[i][frames_run_ % 2];
-            if (timer) timer->begin(cmd, pass.timer);
+            const std::string& timed = graph_.settings.time_each_pass ? pass.label : pass.timer;
+            if (timer) timer->begin(cmd, timed);
             if (pass.indirect.empty()) {
                 auto g = group_count(pass, *prog.manifest);
                 prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
             } else {
                 prog.pipeline->dispatch_indirect(cmd, set, buffers_.at(pass.indirect)->handle(), 0, pass.push);
             }
-            if (timer) timer->end(cmd, pass.timer);
+            if (timer) timer->end(cmd, timed);
         }
     }
     if (timer) timer->end(cmd, "frame");

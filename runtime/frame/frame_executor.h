@@ -33,7 +33,7 @@ struct LaneCount {
 };
 
 struct FrameStats {
-    std::map<std::string, double> gpu_ms;              // per timer group, plus "frame"
+    std::map<std::string, double> gpu_ms;              // per timer group (or pass), plus "frame"
     std::map<std::string, std::uint64_t> evaluations;  // per counter group (if counting)
     double evaluations_per_pixel = 0.0;                // all groups, per output pixel of both eyes
     std::map<std::string, std::uint64_t> iterations;   // per counter group (if counting): fractal loop iterations

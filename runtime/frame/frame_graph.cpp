@@ -1,6 +1,7 @@
 #include "frame_graph.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <fmt/format.h>
 #include <stdexcept>
@@ -113,6 +114,15 @@ void FrameGraph::keep_for_next_frame(const std::string& image) {
     throw std::logic_error(fmt::format("the frame graph has no image {} to keep", image));
 }
 
+std::uint32_t FrameGraph::fovea_window(std::uint32_t image_side) const {
+    auto up8 = [](double v) { return (static_cast<std::uint32_t>(std::ceil(v)) + 7u) & ~7u; };
+    // The pixels short of the periphery lie within this many pixels of the fovea's centre.
+    double radius = (settings.foveation + std::max(settings.foveation_blend, 0.0)) * 0.5 * height;
+    // The shader rounds the window's origin down to 8 pixels from the centre's pixel: 8.5 pixels of
+    // slack on the far side, 2 more for float rounding.
+    return std::min(up8(image_side), 2 * up8(radius + 10.5));
+}
+
 std::int32_t FrameGraph::counter_slot(const std::string& group) {
     auto it = std::find(counter_groups_.begin(), counter_groups_.end(), group);
     if (it != counter_groups_.end()) return static_cast<std::int32_t>(it - counter_groups_.begin());
@@ -218,6 +228,9 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.shade_history = has_history_knob && knob("shade_history") > 0.0 && !manifest.animated && !g.is_panorama() &&
                       manifest.precision == "float" && !g.effects.has(Effect::Rim) && !g.effects.has(Effect::Subsurface);
     if (has_history_knob && !g.shade_history) g.settings.knobs["shade_history"] = 0.0;
+    const ManifestPass* shade = manifest.find_pass("shade");
+    g.fovea_window_dispatch = g.settings.fovea_window && shade &&
+                              std::count(shade->dispatch_constants.begin(), shade->dispatch_constants.end(), kSpecFoveaWindow.id);
     for (const auto& kind : frame_pass_kinds()) kind.add(g);
     for (const auto& p : g.passes_)
         if (!manifest.find_pass(p.program))

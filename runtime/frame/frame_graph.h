@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "common/spec_constants.h"
 #include "frame/shaders/gpu_interface.h"
 #include "frame_settings.h"
 #include "pack/manifest.h"
@@ -118,6 +119,10 @@ public:
         bool foveated = settings.foveation > 0.0 && view != FG_VIEW_CENTRE;
         FramePass full = make(1);
         full.invocations = {width, height, 1};
+        if (foveated && fovea_window_dispatch && !full.persistent_lanes) {
+            full.invocations = {fovea_window(width), fovea_window(height), 1};
+            full.specialize[kSpecFoveaWindow.id] = 1;
+        }
         if (!foveated) {
             add_pass(std::move(full));
             return;
@@ -128,6 +133,9 @@ public:
         add_pass(std::move(full));
         add_pass(std::move(periphery));
     }
+    // One side of the window a foveated eye's full-resolution dispatch covers (fg_dispatch_pixel in
+    // common.glsl places it): every pixel short of the periphery, whatever the fovea's centre.
+    std::uint32_t fovea_window(std::uint32_t image_side) const;
     std::int32_t counter_slot(const std::string& group);
 
     // The views whose images the frame outputs: both eyes, or the centre alone for a mono panorama.
@@ -146,6 +154,9 @@ public:
     // does not depend on the view direction (no rim, no SSS).
     bool shade_history = false;
     bool manifest_has_tail = false;    // the pack has the tail program
+    // A foveated eye's full-resolution passes dispatch the fovea's window: the fovea_window setting,
+    // where the pack's shaders can place it (an older pack's dispatch the whole image).
+    bool fovea_window_dispatch = false;
 
 private:
     std::vector<FrameImage> images_;

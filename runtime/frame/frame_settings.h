@@ -24,6 +24,7 @@ struct FrameSettings {
     Projection projection = Projection::Perspective;   // panoramas: offline renders
     std::uint32_t cone_levels = 5;              // conemarch levels including full resolution
     bool count_evaluations = false;             // SDF evaluations per pass (a specialization constant)
+    bool time_each_pass = false;                // GPU time per pass (its label), not per pass group
     // The AOV pass: the picture's terms as images for a compositor (aov.* per eye; OpenEXR output).
     bool aovs = false;
     // Fewer pixels: the lens mask skips what the headset's lens hides; fixed foveation marches and
@@ -32,6 +33,9 @@ struct FrameSettings {
     bool lens_mask = false;
     double foveation = -1.0;
     double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
+    // Foveated: the full-resolution dispatches cover a window around the fovea, not the whole image
+    // (the same frames; off only to measure or test what the window saves).
+    bool fovea_window = true;
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
     // Set from the pack, not by the user: a pack of precision "double" gets its view origins
     // relative to the camera (gpu_uniforms.h).

@@ -1,7 +1,10 @@
 #include "fgplay_render.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
+#include <utility>
+#include <vector>
 #include <fmt/format.h>
 
 #include "command_outcome.h"
@@ -11,6 +14,21 @@
 #include "vk/context.h"
 
 namespace fg::fgplay {
+
+namespace {
+
+// One line per pass, slowest first, with its share of the frame.
+void print_pass_times(const std::map<std::string, double>& ms) {
+    double frame = ms.count("frame") ? ms.at("frame") : 0.0;
+    std::vector<std::pair<double, std::string>> passes;
+    for (const auto& [label, t] : ms)
+        if (label != "frame") passes.emplace_back(t, label);
+    std::sort(passes.rbegin(), passes.rend());
+    for (const auto& [t, label] : passes)
+        fmt::print("  {:<30} {:8.2f} ms {:5.1f} %\n", label, t, frame > 0.0 ? 100.0 * t / frame : 0.0);
+}
+
+}  // namespace
 
 int render(const RenderOptions& o) {
     if (!o.path.empty()) return render_path(o);
@@ -23,7 +41,9 @@ int render(const RenderOptions& o) {
         frame.height = o.height;
         frame.stereo = o.stereo;
         frame.cone_levels = o.cone_levels;
-        frame.count_evaluations = o.count;
+        // Counting costs atomics in every step: a pass's own time is taken without it.
+        frame.count_evaluations = o.count && !o.time_passes;
+        frame.time_each_pass = o.time_passes;
         frame.knobs = o.knobs;
         frame.lens_mask = o.lens_mask;
         frame.foveation = o.foveation;
@@ -52,7 +72,8 @@ int render(const RenderOptions& o) {
                 write_depth_png16(path("depth_right"), r.depth_right, o.width, o.height, static_cast<float>(scene.max_distance));
             }
             std::string times;
-            for (const auto& [group, ms] : r.stats.gpu_ms) times += fmt::format(" {} {:.2f} ms,", group, ms);
+            for (const auto& [group, ms] : r.stats.gpu_ms)
+                if (!o.time_passes || group == "frame") times += fmt::format(" {} {:.2f} ms,", group, ms);
             // "march.L0 12.15, march.L1 1.96": a count per pass group, per output pixel of both eyes.
             auto per_pixel = [&](const std::map<std::string, std::uint64_t>& counts) {
                 std::string list;
@@ -62,7 +83,8 @@ int render(const RenderOptions& o) {
             };
             fmt::print("frame {}: {} stereo {}x{} per eye; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height,
                        times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
-            if (o.count) {
+            if (o.time_passes) print_pass_times(r.stats.gpu_ms);
+            if (frame.count_evaluations) {
                 fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,
                            per_pixel(r.stats.evaluations));
                 if (r.stats.iterations_per_pixel > 0.0)

@@ -34,6 +34,7 @@ struct RenderOptions {
     bool describe = false;
     bool depth = false;
     bool count = true;
+    bool time_passes = false;        // GPU time of each pass, counting off (as the benchmark times)
     bool validation = false;
     std::string device;
     std::map<std::string, double> knobs;

@@ -173,24 +173,50 @@ bool fg_outside_lens(int view, ivec2 pixel)
 
 // Fixed foveation: 0 inside the fovea (around the lens centre), rising to 1 across the blend band,
 // 1 in the periphery. The centre eye of stereo reprojection is never foveated.
+bool fg_foveated(int view)
+{
+    return fg_frame.fovea_radius > 0.0 && view != FG_VIEW_CENTRE;
+}
+
+// The fovea's centre in pixels: where the lens's optical axis meets the image.
+vec2 fg_fovea_centre(int view)
+{
+    GpuView v = fg_frame.views[view];
+    return (v.lens_radii.x > 0.0 ? v.lens_centre : vec2(0.5)) * vec2(fg_view_size(view));
+}
+
 float fg_periphery(int view, ivec2 pixel)
 {
-    if (fg_frame.fovea_radius <= 0.0 || view == FG_VIEW_CENTRE) return 0.0;
+    if (!fg_foveated(view)) return 0.0;
     vec2 size = vec2(fg_view_size(view));
-    GpuView v = fg_frame.views[view];
-    vec2 centre = (v.lens_radii.x > 0.0 ? v.lens_centre : vec2(0.5)) * size;
-    float r = length(vec2(pixel) + 0.5 - centre) / (0.5 * size.y);
+    float r = length(vec2(pixel) + 0.5 - fg_fovea_centre(view)) / (0.5 * size.y);
     return clamp((r - fg_frame.fovea_radius) / max(fg_frame.fovea_blend, 1e-6), 0.0, 1.0);
 }
 
 // Foveation splits each per-eye pass into two dispatches, so that no SIMD lane idles on a skipped
 // pixel: the full-resolution one (stride 1) takes the pixels short of the periphery, the
-// periphery's own (stride 2, a quarter of the invocations) the even pixel of each 2x2 block beyond.
+// periphery's own (stride 2, a quarter of the invocations) the even pixel of each 2x2 block beyond,
+// inside the lens or not (a pixel outside it only gets its miss; the fovea pass writes the odd ones).
 bool fg_dispatch_takes(int view, ivec2 pixel, int stride)
 {
-    // Pixels outside the lens cost nothing (they only write a miss): the first dispatch takes them.
-    bool periphery = fg_periphery(view, pixel) >= 1.0 && !fg_outside_lens(view, pixel);
-    return periphery == (stride == 2);
+    return (fg_periphery(view, pixel) >= 1.0) == (stride == 2);
+}
+
+// The pixel an invocation of a per-eye pixel pass stands for, from its cell of the dispatch grid.
+// A foveated eye's full-resolution dispatch (FG_SPEC_FOVEA_WINDOW) covers only a window around the
+// fovea, which FrameGraph::fovea_window sizes to hold every pixel short of the periphery: llvmpipe
+// runs a shader's every line for a SIMD group whose lanes all return at once, so the periphery's
+// idle invocations cost half as much as live ones. The window is placed in steps of 8 pixels, so a
+// SIMD group holds the same pixels as in a dispatch over the whole image.
+ivec2 fg_dispatch_pixel(int view, int stride, ivec2 cell)
+{
+    if (FG_SPEC_FOVEA_WINDOW != 1) return cell * stride;
+    ivec2 size = fg_view_size(view);
+    // Pixel passes run 8x8 workgroups (the executor checks); gl_WorkGroupSize is not declared yet here.
+    ivec2 window = ivec2(gl_NumWorkGroups.xy * 8u);
+    ivec2 origin = max((ivec2(floor(fg_fovea_centre(view))) & ~7) - window / 2, ivec2(0));
+    // A window as large as the image is the image.
+    return cell + ivec2(window.x >= size.x ? 0 : origin.x, window.y >= size.y ? 0 : origin.y);
 }
 
 // The hit threshold's footprint in full-resolution pixels: 2 where a pixel stands for its block.

@@ -271,7 +271,7 @@ void main()
         return;
     }
     ivec4 rect = fg_level_rect(fg_full_resolution() ? 0 : pc.level, full);
-    ivec2 pixel = fg_invocation_cell() * pc.stride;
+    ivec2 pixel = fg_full_resolution() ? fg_dispatch_pixel(pc.view, pc.stride, fg_invocation_cell()) : fg_invocation_cell();
     if (pixel.x >= rect.z || pixel.y >= rect.w) return;
     if (fg_full_resolution() && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_skip_outside_lens(pixel, rect, full)) return;

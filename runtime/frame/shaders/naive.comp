@@ -133,7 +133,7 @@ void main()
     if (FG_PERSISTENT_LANES) {
         fg_naive_persistent(size);
     } else {
-        ivec2 pixel = fg_invocation_cell() * pc.stride;
+        ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, fg_invocation_cell());
         if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
         if (fg_skip_outside_lens(pixel)) return;
         FgNaiveRay r = fg_naive_begin(pixel, size);

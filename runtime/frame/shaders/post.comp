@@ -16,7 +16,7 @@ layout(push_constant) uniform FgPostPush { PostPush pc; };
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * pc.stride;
+    ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, ivec2(gl_GlobalInvocationID.xy));
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {

@@ -93,7 +93,7 @@ float walk_level(int level, float t, float t_max)
 
 void main()
 {
-    ivec2 pixel = fg_invocation_cell() * pc.stride;
+    ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, fg_invocation_cell());
     ivec2 size = fg_view_size(pc.view);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {
