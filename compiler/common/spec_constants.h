@@ -81,8 +81,10 @@ inline constexpr DispatchConstant kSpecFullResolution{62, "FG_SPEC_FULL_RESOLUTI
                                                       "1: conemarch level 0, 0: a coarse level"};
 inline constexpr DispatchConstant kSpecFoveaWindow{
     63, "FG_SPEC_FOVEA_WINDOW", "1: a foveated eye's full-resolution dispatch covers the fovea's window, not the image"};
-inline constexpr std::array<DispatchConstant, 4> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution,
-                                                                    kSpecFoveaWindow};
+inline constexpr DispatchConstant kSpecPeripheryParent{
+    64, "FG_SPEC_PERIPHERY_PARENT", "the conemarch level a foveated periphery's pixel starts from (-1: level 1)"};
+inline constexpr std::array<DispatchConstant, 5> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution,
+                                                                    kSpecFoveaWindow, kSpecPeripheryParent};
 static_assert(kGlobalKnobs.back().id < kSpecProjection.id, "global knob ids would run into the dispatch constants'");
 
 inline bool is_dispatch_constant(std::uint32_t id) {

@@ -70,9 +70,20 @@ void add_view(FrameGraph& g, int view) {
         p.specialize[kSpecCentreView.id] = centre ? 1 : 0;
         return p;
     };
+    // A foveated periphery's pixel stands for its 2x2 block, as a level-1 cell does: it starts from
+    // level 2, where the pack's shaders can (FG_SPEC_PERIPHERY_PARENT). Level 1 then serves only the
+    // pixels short of the periphery and covers the fovea's window at half resolution; not with
+    // cross-frame reuse, which walks every cell of the old level 1.
+    const bool foveated = !centre && g.settings.foveation > 0.0;
+    const bool periphery_from_2 = foveated && levels > 2 && g.periphery_from_level_2;
+    const bool level_1_window = periphery_from_2 && g.fovea_window_dispatch && !g.reuse;
     for (std::uint32_t k = levels; k-- > 1;) {
         FramePass p = level_pass(k, 1);
         p.invocations = {level_size(w, k), level_size(h, k), 1};
+        if (k == 1 && level_1_window) {
+            p.invocations = {g.fovea_window(w) / 2, g.fovea_window(h) / 2, 1};
+            p.specialize[kSpecFoveaWindow.id] = 1;
+        }
         g.add_pass(std::move(p));
     }
     if (centre) {
@@ -80,7 +91,11 @@ void add_view(FrameGraph& g, int view) {
         p.invocations = {w, h, 1};
         g.add_pass(std::move(p));
     } else {
-        g.add_pixel_pass(view, [&](int stride) { return level_pass(0, stride); });
+        g.add_pixel_pass(view, [&](int stride) {
+            FramePass p = level_pass(0, stride);
+            if (stride == 2 && periphery_from_2) p.specialize[kSpecPeripheryParent.id] = 2;
+            return p;
+        });
     }
     if (g.persistent_lanes) add_resolve_pass(g, view, w, h, atlas);
     if (tail) {

@@ -228,9 +228,13 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.shade_history = has_history_knob && knob("shade_history") > 0.0 && !manifest.animated && !g.is_panorama() &&
                       manifest.precision == "float" && !g.effects.has(Effect::Rim) && !g.effects.has(Effect::Subsurface);
     if (has_history_knob && !g.shade_history) g.settings.knobs["shade_history"] = 0.0;
-    const ManifestPass* shade = manifest.find_pass("shade");
-    g.fovea_window_dispatch = g.settings.fovea_window && shade &&
-                              std::count(shade->dispatch_constants.begin(), shade->dispatch_constants.end(), kSpecFoveaWindow.id);
+    // What the pack's shaders can do that an older fgc's could not.
+    auto declares = [&](const char* program, const DispatchConstant& c) {
+        const ManifestPass* p = manifest.find_pass(program);
+        return p && std::count(p->dispatch_constants.begin(), p->dispatch_constants.end(), c.id) > 0;
+    };
+    g.fovea_window_dispatch = g.settings.fovea_window && declares("shade", kSpecFoveaWindow);
+    g.periphery_from_level_2 = declares("conemarch", kSpecPeripheryParent);
     for (const auto& kind : frame_pass_kinds()) kind.add(g);
     for (const auto& p : g.passes_)
         if (!manifest.find_pass(p.program))

@@ -157,6 +157,8 @@ public:
     // A foveated eye's full-resolution passes dispatch the fovea's window: the fovea_window setting,
     // where the pack's shaders can place it (an older pack's dispatch the whole image).
     bool fovea_window_dispatch = false;
+    // The pack's conemarch can start a foveated periphery's pixels from level 2 (conemarch_pass.cpp).
+    bool periphery_from_level_2 = false;
 
 private:
     std::vector<FrameImage> images_;

@@ -1,6 +1,7 @@
 // A foveated eye's full-resolution passes dispatch only a window around the fovea
-// (FrameGraph::fovea_window, fg_dispatch_pixel in common.glsl): the pixels beyond belong to the
-// periphery's dispatch, and a CPU rasteriser runs a whole shader for a SIMD group whose lanes have
+// (FrameGraph::fovea_window, fg_dispatch_cell in common.glsl), and its conemarch level 1 the same
+// window at half resolution: the pixels beyond belong to the periphery's dispatch, whose pixels
+// start from level 2, and a CPU rasteriser runs a whole shader for a SIMD group whose lanes have
 // nothing to do. Frames must be bit-identical to a dispatch over the whole image, also for a
 // headset's off-centre lenses, where the window follows the lens centre.
 #include <gtest/gtest.h>
@@ -72,6 +73,14 @@ TEST_F(FoveaWindow, the_full_resolution_dispatches_cover_the_fovea_and_the_perip
         EXPECT_EQ(pass_named(g, label).invocations, (std::array<std::uint32_t, 3>{96, 96, 1}));
     }
     EXPECT_EQ(pass_named(g, "conemarch.left.L0.periphery").invocations, (std::array<std::uint32_t, 3>{80, 60, 1}));
+    // Level 1 serves only the pixels short of the periphery: the same window at half resolution.
+    // The periphery's pixels start from level 2.
+    EXPECT_EQ(pass_named(g, "conemarch.left.L1").invocations, (std::array<std::uint32_t, 3>{48, 48, 1}));
+    EXPECT_EQ(pass_named(g, "conemarch.left.L0.periphery").specialize.at(kSpecPeripheryParent.id), 2);
+    FrameSettings reuse = foveated(StereoMode::PerEye, true);
+    reuse.knobs["reuse"] = 1.0;   // walks every cell of the old level 1
+    EXPECT_EQ(pass_named(FrameGraph::build(pack.manifest, reuse, kWidth, kHeight), "conemarch.left.L1").invocations,
+              (std::array<std::uint32_t, 3>{80, 60, 1}));
     FrameGraph whole = FrameGraph::build(pack.manifest, foveated(StereoMode::PerEye, false), kWidth, kHeight);
     EXPECT_EQ(pass_named(whole, "shade.left").invocations, (std::array<std::uint32_t, 3>{kWidth, kHeight, 1}));
     // A fovea wider than the image: the window is the image.
@@ -99,7 +108,9 @@ TEST_F(FoveaWindow, frames_are_bit_identical_to_a_dispatch_over_the_whole_image)
             EXPECT_TRUE(window.right == whole.right);
             EXPECT_TRUE(window.depth_left == whole.depth_left);
             EXPECT_TRUE(window.depth_right == whole.depth_right);
-            EXPECT_EQ(window.evaluations_per_pixel, whole.evaluations_per_pixel);
+            // The same rays; per-eye, level 1 no longer marches the periphery's cells, which no pixel reads.
+            if (stereo == StereoMode::PerEye) EXPECT_LT(window.evaluations_per_pixel, whole.evaluations_per_pixel);
+            else EXPECT_EQ(window.evaluations_per_pixel, whole.evaluations_per_pixel);
         }
     }
 }

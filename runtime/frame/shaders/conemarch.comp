@@ -90,10 +90,14 @@ struct FgFineRay {
     bool deferred;
 };
 
-// The parent level's bound for a full-resolution pixel, or where its ray enters the bounds.
+// The parent level's bound for a full-resolution pixel, or where its ray enters the bounds. A pixel
+// of the foveated periphery stands for its 2x2 block, as a level-1 cell does, and marches with that
+// footprint: the runtime starts it from level 2 (FG_SPEC_PERIPHERY_PARENT), and level 1 then
+// covers only the fovea's window.
 float fg_parent_bound(ivec2 pixel, ivec2 full, vec3 ro, vec3 rd)
 {
-    if (pc.top == 0) return imageLoad(fg_levels, fg_level_rect(1, full).xy + pixel / 2).y;
+    int parent = pc.stride == 2 && FG_SPEC_PERIPHERY_PARENT > 1 ? FG_SPEC_PERIPHERY_PARENT : 1;
+    if (int(fg_frame.cone_levels) > parent) return imageLoad(fg_levels, fg_level_rect(parent, full).xy + (pixel >> parent)).y;
     return fg_bounds_interval_spread(ro, rd, fg_cone_tan(0), fg_origin_spread(pc.view, 0)).x;
 }
 
@@ -271,7 +275,7 @@ void main()
         return;
     }
     ivec4 rect = fg_level_rect(fg_full_resolution() ? 0 : pc.level, full);
-    ivec2 pixel = fg_full_resolution() ? fg_dispatch_pixel(pc.view, pc.stride, fg_invocation_cell()) : fg_invocation_cell();
+    ivec2 pixel = fg_dispatch_cell(pc.view, fg_full_resolution() ? 0 : pc.level, pc.stride, fg_invocation_cell());
     if (pixel.x >= rect.z || pixel.y >= rect.w) return;
     if (fg_full_resolution() && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_skip_outside_lens(pixel, rect, full)) return;
