@@ -133,7 +133,7 @@ public:
         add_pass(std::move(full));
         add_pass(std::move(periphery));
     }
-    // One side of the window a foveated eye's full-resolution dispatch covers (fg_dispatch_pixel in
+    // One side of the window a foveated eye's full-resolution dispatch covers (fg_dispatch_cell in
     // common.glsl places it): every pixel short of the periphery, whatever the fovea's centre.
     std::uint32_t fovea_window(std::uint32_t image_side) const;
     std::int32_t counter_slot(const std::string& group);

@@ -60,6 +60,8 @@ int render(const RenderOptions& o) {
         }
         std::filesystem::create_directories(o.out);
         fmt::print("device: {}\n", ctx.device_name());
+        // A CPU rasteriser compiles each pipeline at its first dispatch: time the frames after one.
+        if (o.time_passes) renderer.render(head, o.time, 0);
         for (int f = 0; f < o.frames; ++f) {
             RenderedFrame r = renderer.render(head, o.time + f / 90.0, static_cast<std::uint32_t>(f));
             std::string suffix = o.frames > 1 ? fmt::format("_{:04}", f) : "";

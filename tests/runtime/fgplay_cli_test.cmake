@@ -58,6 +58,15 @@ foreach(image left.png right.png side_by_side.png)
   endif()
 endforeach()
 
+# Each dispatch's own time, one line per pass, and no counts (counting is off while timing).
+execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 48x48 --out ${WORK}/timed --time-passes
+                        --lens-mask --foveation 0.5
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "\n  conemarch[.]left[.]L0[.]periphery +[0-9.]+ ms +[0-9.]+ %"
+   OR NOT out MATCHES "\n  fovea[.]right +[0-9.]+ ms" OR out MATCHES "SDF evaluations")
+  message(FATAL_ERROR "fgplay render --time-passes printed no line per pass, or counted: ${out}${err}")
+endif()
+
 execute_process(COMMAND ${FGPLAY} bench --graph ${SOURCE}/graphs/gallery/mandelbulb.json --quick --size 48 --frames 1
                         --compile-gallery ${SOURCE}/graphs/gallery --out ${WORK}/bench
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

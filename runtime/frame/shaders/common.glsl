@@ -171,8 +171,7 @@ bool fg_outside_lens(int view, ivec2 pixel)
     return fg_outside_lens(view, (vec2(pixel) + 0.5) / vec2(fg_view_size(view)), vec2(0.0));
 }
 
-// Fixed foveation: 0 inside the fovea (around the lens centre), rising to 1 across the blend band,
-// 1 in the periphery. The centre eye of stereo reprojection is never foveated.
+// The centre eye of stereo reprojection is never foveated.
 bool fg_foveated(int view)
 {
     return fg_frame.fovea_radius > 0.0 && view != FG_VIEW_CENTRE;
@@ -185,6 +184,8 @@ vec2 fg_fovea_centre(int view)
     return (v.lens_radii.x > 0.0 ? v.lens_centre : vec2(0.5)) * vec2(fg_view_size(view));
 }
 
+// Fixed foveation: 0 inside the fovea (around the lens centre), rising to 1 across the blend band,
+// 1 in the periphery.
 float fg_periphery(int view, ivec2 pixel)
 {
     if (!fg_foveated(view)) return 0.0;
