@@ -72,11 +72,12 @@ void add_view(FrameGraph& g, int view) {
     };
     // A foveated periphery's pixel stands for its 2x2 block, as a level-1 cell does: it starts from
     // level 2, where the pack's shaders can (FG_SPEC_PERIPHERY_PARENT). Level 1 then serves only the
-    // pixels short of the periphery and covers the fovea's window at half resolution; not with
-    // cross-frame reuse, which walks every cell of the old level 1.
+    // pixels short of the periphery and covers the fovea's window at half resolution. Not with
+    // cross-frame reuse, which walks every cell of the old level 1: there level 1 is marched whole,
+    // and the periphery starts from it.
     const bool foveated = !centre && g.settings.foveation > 0.0;
-    const bool periphery_from_2 = foveated && levels > 2 && g.periphery_from_level_2;
-    const bool level_1_window = periphery_from_2 && g.fovea_window_dispatch && !g.reuse;
+    const bool periphery_from_2 = foveated && levels > 2 && g.periphery_from_level_2 && !g.reuse;
+    const bool level_1_window = periphery_from_2 && g.fovea_window_dispatch;
     for (std::uint32_t k = levels; k-- > 1;) {
         FramePass p = level_pass(k, 1);
         p.invocations = {level_size(w, k), level_size(h, k), 1};
