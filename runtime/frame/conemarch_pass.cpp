@@ -75,8 +75,7 @@ void add_view(FrameGraph& g, int view) {
     // pixels short of the periphery and covers the fovea's window at half resolution. Not with
     // cross-frame reuse, which walks every cell of the old level 1: there level 1 is marched whole,
     // and the periphery starts from it.
-    const bool foveated = !centre && g.settings.foveation > 0.0;
-    const bool periphery_from_2 = foveated && levels > 2 && g.periphery_from_level_2 && !g.reuse;
+    const bool periphery_from_2 = g.foveated(view) && levels > 2 && g.periphery_from_level_2 && !g.reuse;
     const bool level_1_window = periphery_from_2 && g.fovea_window_dispatch;
     for (std::uint32_t k = levels; k-- > 1;) {
         FramePass p = level_pass(k, 1);

@@ -145,7 +145,7 @@ void FrameExecutor::check_declarations() const {
             throw std::runtime_error(fmt::format("pass {} pushes {} bytes of constants, and its shader's block is {} bytes: "
                                                  "the runtime and the pack disagree (recompile the pack with this fgc)",
                                                  pass.label, pass.push.size(), mp.push_constant_size));
-        // fg_dispatch_pixel places the fovea's window from the group count in 8x8 workgroups.
+        // fg_dispatch_cell places the fovea's window from the group count in 8x8 workgroups.
         if (pass.specialize.count(kSpecFoveaWindow.id) && (mp.local_size[0] != 8 || mp.local_size[1] != 8))
             throw std::runtime_error(fmt::format("pass {} dispatches the fovea's window with {}x{} workgroups: its shader "
                                                  "needs 8x8",

@@ -116,14 +116,13 @@ public:
     // dispatches, all pixels short of the periphery (stride 1) and every other pixel beyond (stride 2).
     template <class Make>
     void add_pixel_pass(int view, Make make) {
-        bool foveated = settings.foveation > 0.0 && view != FG_VIEW_CENTRE;
         FramePass full = make(1);
         full.invocations = {width, height, 1};
-        if (foveated && fovea_window_dispatch && !full.persistent_lanes) {
+        if (foveated(view) && fovea_window_dispatch && !full.persistent_lanes) {
             full.invocations = {fovea_window(width), fovea_window(height), 1};
             full.specialize[kSpecFoveaWindow.id] = 1;
         }
-        if (!foveated) {
+        if (!foveated(view)) {
             add_pass(std::move(full));
             return;
         }
@@ -133,6 +132,8 @@ public:
         add_pass(std::move(full));
         add_pass(std::move(periphery));
     }
+    // Fixed foveation applies to the eyes, never to the centre view of stereo reprojection.
+    bool foveated(int view) const { return settings.foveation > 0.0 && view != FG_VIEW_CENTRE; }
     // One side of the window a foveated eye's full-resolution dispatch covers (fg_dispatch_cell in
     // common.glsl places it): every pixel short of the periphery, whatever the fovea's centre.
     std::uint32_t fovea_window(std::uint32_t image_side) const;

@@ -11,6 +11,7 @@
 #include "runtime_test_support.h"
 
 using namespace fg;
+using fg::test::pass_named;
 using fg::test::RuntimeTest;
 
 namespace {
@@ -29,12 +30,6 @@ FrameSettings foveated(StereoMode stereo, bool window) {
     fs.fovea_window = window;
     fs.count_evaluations = true;
     return fs;
-}
-
-const FramePass& pass_named(const FrameGraph& g, const std::string& label) {
-    for (const auto& p : g.passes())
-        if (p.label == label) return p;
-    throw std::runtime_error("no pass " + label);
 }
 
 struct Frame {

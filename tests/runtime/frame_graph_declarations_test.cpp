@@ -12,6 +12,7 @@
 #include "runtime_test_support.h"
 
 using namespace fg;
+using fg::test::pass_named;
 
 namespace {
 
@@ -36,12 +37,6 @@ std::size_t batch_of(const FrameGraph& g, const std::string& label) {
             if (g.passes()[i].label == label) return b;
     ADD_FAILURE() << "no pass " << label << " in\n" << g.describe();
     return 0;
-}
-
-FramePass& pass_named(FrameGraph& g, const std::string& label) {
-    for (auto& p : g.passes())
-        if (p.label == label) return p;
-    throw std::logic_error("no pass " + label);
 }
 
 class FrameGraphDeclarations : public test::RuntimeTest {};

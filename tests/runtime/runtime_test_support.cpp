@@ -73,4 +73,14 @@ std::string RuntimeTest::validation_text() {
     return s;
 }
 
+FramePass& pass_named(FrameGraph& g, const std::string& label) {
+    for (auto& p : g.passes())
+        if (p.label == label) return p;
+    throw std::logic_error("no pass " + label);
+}
+
+const FramePass& pass_named(const FrameGraph& g, const std::string& label) {
+    return pass_named(const_cast<FrameGraph&>(g), label);
+}
+
 }  // namespace fg::test

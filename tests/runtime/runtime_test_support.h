@@ -36,6 +36,10 @@ std::unique_ptr<CpuScene> cpu_scene(const Pack& pack);
 float atlas_cone_bound(const std::vector<std::byte>& atlas, std::uint32_t width, std::uint32_t height,
                        std::uint32_t level, std::uint32_t x, std::uint32_t y);
 
+// The pass of a frame graph with this label; throws std::logic_error naming it when there is none.
+FramePass& pass_named(FrameGraph& g, const std::string& label);
+const FramePass& pass_named(const FrameGraph& g, const std::string& label);
+
 // One Vulkan context for the whole test program (pipeline creation is the slow part on lavapipe).
 vk::Context& shared_context();
 

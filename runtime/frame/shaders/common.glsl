@@ -218,7 +218,7 @@ ivec2 fg_dispatch_cell(int view, int level, int stride, ivec2 cell)
     ivec2 window = ivec2(gl_NumWorkGroups.xy * 8u) << level;
     ivec2 origin = max((ivec2(floor(fg_fovea_centre(view))) & ~7) - window / 2, ivec2(0));
     // A window as large as the image is the image.
-    return cell + (ivec2(window.x >= size.x ? 0 : origin.x, window.y >= size.y ? 0 : origin.y) >> level);
+    return cell * stride + (ivec2(window.x >= size.x ? 0 : origin.x, window.y >= size.y ? 0 : origin.y) >> level);
 }
 
 ivec2 fg_dispatch_pixel(int view, int stride, ivec2 cell)
