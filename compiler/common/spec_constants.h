@@ -79,12 +79,13 @@ inline constexpr DispatchConstant kSpecProjection{60, "FG_SPEC_PROJECTION", "the
 inline constexpr DispatchConstant kSpecCentreView{61, "FG_SPEC_CENTRE_VIEW", "1: the pass marches the centre view, 0: an eye"};
 inline constexpr DispatchConstant kSpecFullResolution{62, "FG_SPEC_FULL_RESOLUTION",
                                                       "1: conemarch level 0, 0: a coarse level"};
-inline constexpr DispatchConstant kSpecFoveaWindow{
-    63, "FG_SPEC_FOVEA_WINDOW", "1: a foveated eye's full-resolution dispatch covers the fovea's window, not the image"};
+// 63 was FG_SPEC_FOVEA_WINDOW (a square window around the fovea), which the tile lists replaced.
 inline constexpr DispatchConstant kSpecPeripheryParent{
     64, "FG_SPEC_PERIPHERY_PARENT", "the conemarch level a foveated periphery's pixel starts from (-1: level 1)"};
+inline constexpr DispatchConstant kSpecTileList{
+    65, "FG_SPEC_TILE_LIST", "1: the pass dispatches the 8x8 tiles its FgTiles buffer lists, not a grid over its image"};
 inline constexpr std::array<DispatchConstant, 5> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution,
-                                                                    kSpecFoveaWindow, kSpecPeripheryParent};
+                                                                    kSpecPeripheryParent, kSpecTileList};
 static_assert(kGlobalKnobs.back().id < kSpecProjection.id, "global knob ids would run into the dispatch constants'");
 
 inline bool is_dispatch_constant(std::uint32_t id) {

@@ -36,10 +36,10 @@ void add_view(FrameGraph& g, int view) {
     std::string queue = "tail." + name;
     bool tail = g.tail_after > 0 && g.manifest_has_tail;
     g.add_buffer({queue, tail ? 16 + 16ull * w * h : 32, {0, 1, 1, 0},
-                  tail ? "pixels whose march continues in the tail pass" : "(tail pass off)"});
+                  tail ? "pixels whose march continues in the tail pass" : "(tail pass off)", {}});
     // Persistent lanes' work queues at full resolution: one word per dispatch (stride 1 and 2).
     std::string lanes = "lanes." + name;
-    g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each full-resolution dispatch" : "(persistent lanes off)"});
+    g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each full-resolution dispatch" : "(persistent lanes off)", {}});
     std::string rays = add_rays_buffer(g, view, w, h);
     // Cross-frame reuse reads this eye's levels of the frame before; otherwise the program's binding
     // gets the levels it writes anyway.
@@ -72,18 +72,14 @@ void add_view(FrameGraph& g, int view) {
     };
     // A foveated periphery's pixel stands for its 2x2 block, as a level-1 cell does: it starts from
     // level 2, where the pack's shaders can (FG_SPEC_PERIPHERY_PARENT). Level 1 then serves only the
-    // pixels short of the periphery and covers the fovea's window at half resolution. Not with
+    // pixels short of the periphery and dispatches only the tiles over them. Not with
     // cross-frame reuse, which walks every cell of the old level 1: there level 1 is marched whole,
     // and the periphery starts from it.
     const bool periphery_from_2 = g.foveated(view) && levels > 2 && g.periphery_from_level_2 && !g.reuse;
-    const bool level_1_window = periphery_from_2 && g.fovea_window_dispatch;
     for (std::uint32_t k = levels; k-- > 1;) {
         FramePass p = level_pass(k, 1);
         p.invocations = {level_size(w, k), level_size(h, k), 1};
-        if (k == 1 && level_1_window) {
-            p.invocations = {g.fovea_window(w) / 2, g.fovea_window(h) / 2, 1};
-            p.specialize[kSpecFoveaWindow.id] = 1;
-        }
+        if (k == 1 && periphery_from_2) g.dispatch_tiles(p, view, TileRegion::FoveaLevel1);
         g.add_pass(std::move(p));
     }
     if (centre) {

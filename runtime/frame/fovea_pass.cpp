@@ -16,6 +16,7 @@ void add_fovea_passes(FrameGraph& g) {
         p.bind("fg_final", "final." + eye, Access::ReadWrite);
         p.set_push(FoveaPush{view});
         p.invocations = {g.width, g.height, 1};
+        g.dispatch_tiles(p, view, TileRegion::Fill);
         g.add_pass(std::move(p));
     }
 }

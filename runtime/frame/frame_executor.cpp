@@ -37,6 +37,7 @@ const char* standard_resource(const std::string& binding) {
     if (binding == "FgScene") return "scene";
     if (binding == "FgParams") return "params";
     if (binding == "FgCounters") return "counters";
+    if (binding == "FgTiles") return "no_tiles";
     return nullptr;
 }
 
@@ -145,10 +146,9 @@ void FrameExecutor::check_declarations() const {
             throw std::runtime_error(fmt::format("pass {} pushes {} bytes of constants, and its shader's block is {} bytes: "
                                                  "the runtime and the pack disagree (recompile the pack with this fgc)",
                                                  pass.label, pass.push.size(), mp.push_constant_size));
-        // fg_dispatch_cell places the fovea's window from the group count in 8x8 workgroups.
-        if (pass.specialize.count(kSpecFoveaWindow.id) && (mp.local_size[0] != 8 || mp.local_size[1] != 8))
-            throw std::runtime_error(fmt::format("pass {} dispatches the fovea's window with {}x{} workgroups: its shader "
-                                                 "needs 8x8",
+        // fg_dispatch_cell places one 8x8 workgroup on each tile.
+        if (pass.specialize.count(kSpecTileList.id) && (mp.local_size[0] != 8 || mp.local_size[1] != 8))
+            throw std::runtime_error(fmt::format("pass {} dispatches tiles with {}x{} workgroups: its shader needs 8x8",
                                                  pass.label, mp.local_size[0], mp.local_size[1]));
         for (const auto& b : mp.bindings) {
             std::string resource;
@@ -181,6 +181,7 @@ void FrameExecutor::make_resources() {
     for (const auto& b : graph_.buffers())
         buffers_[b.name] = std::make_unique<vk::Buffer>(
             ctx_, b.size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+    no_tiles_ = std::make_unique<vk::Buffer>(ctx_, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     frame_ = std::make_unique<vk::Buffer>(ctx_, sizeof(GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
     scene_ = std::make_unique<vk::Buffer>(ctx_, sizeof(GpuScene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
     params_bytes_.assign(std::max<std::size_t>(16, manifest_.params_size), std::byte{0});
@@ -207,6 +208,7 @@ vk::Buffer* FrameExecutor::resolve_buffer(const std::string& name) const {
     if (name == "scene") return scene_.get();
     if (name == "params") return params_.get();
     if (name == "counters") return counters_.get();
+    if (name == "no_tiles") return no_tiles_.get();
     auto it = buffers_.find(name);
     return it == buffers_.end() ? nullptr : it->second.get();
 }
@@ -267,6 +269,25 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     frame_data_.shade_history = graph_.shade_history && history_valid_ ? 1u : 0u;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
+    update_tile_lists();
+}
+
+void FrameExecutor::update_tile_lists() {
+    for (const auto& b : graph_.buffers()) {
+        if (!b.tiles) continue;
+        const auto [view, region] = *b.tiles;
+        const GpuView& v = frame_data_.views[view];
+        std::array<float, 7> placed_by{static_cast<float>(frame_data_.eye_size.x), static_cast<float>(frame_data_.eye_size.y),
+                                       v.lens_centre.x, v.lens_centre.y, v.lens_radii.x > 0.0f ? 1.0f : 0.0f,
+                                       frame_data_.fovea_radius, frame_data_.fovea_blend};
+        TileList& list = tile_lists_[b.name];
+        if (list.written && list.placed_by == placed_by) continue;
+        list.placed_by = placed_by;
+        list.tiles = list_dispatch_tiles(frame_data_, view, region);
+        if (list.tiles.size() * 4 > b.size)
+            throw std::logic_error(fmt::format("{} tiles for {}, which holds {}", list.tiles.size(), b.name, b.size / 4));
+        list.written = false;
+    }
 }
 
 void FrameExecutor::set_scene(const GpuScene& scene) {
@@ -351,6 +372,15 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
     for (const auto& b : graph_.buffers())
         if (!b.reset.empty())
             vkCmdUpdateBuffer(cmd, buffers_.at(b.name)->handle(), 0, b.reset.size() * 4, b.reset.data());
+    for (auto& [name, list] : tile_lists_) {
+        if (list.written) continue;
+        // vkCmdUpdateBuffer takes at most 64 KiB at a time.
+        constexpr std::size_t kChunk = 16384;
+        for (std::size_t at = 0; at < list.tiles.size(); at += kChunk)
+            vkCmdUpdateBuffer(cmd, buffers_.at(name)->handle(), at * 4, std::min(kChunk, list.tiles.size() - at) * 4,
+                              list.tiles.data() + at);
+        list.written = true;
+    }
     vk::transfer_to_compute_barrier(cmd);
     if (timer) timer->begin(cmd, "frame");
     for (std::size_t batch = 0; batch < batches_.size(); ++batch) {
@@ -361,7 +391,11 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
             VkDescriptorSet set = sets_[i][frames_run_ % 2];
             const std::string& timed = graph_.settings.time_each_pass ? pass.label : pass.timer;
             if (timer) timer->begin(cmd, timed);
-            if (pass.indirect.empty()) {
+            if (!pass.tile_list.empty()) {
+                const auto& tiles = tile_lists_[pass.tile_list].tiles;
+                if (!tiles.empty())
+                    prog.pipeline->dispatch(cmd, set, {static_cast<std::uint32_t>(tiles.size()), 1, 1}, pass.push);
+            } else if (pass.indirect.empty()) {
                 auto g = group_count(pass, *prog.manifest);
                 prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
             } else {

@@ -101,6 +101,16 @@ private:
     GpuScene scene_data_{};
     GpuView previous_views_[2]{};   // the eyes of the last frame run
     bool history_valid_ = false;
+    // The tile lists of the graph's tile buffers, remade only when what places them changes (at a
+    // headset's resolution a list has tens of thousands of tiles) and written before the next frame.
+    struct TileList {
+        std::array<float, 7> placed_by{};   // eye size, lens centre and whether the mask is on, fovea radius and blend
+        std::vector<std::uint32_t> tiles;
+        bool written = false;
+    };
+    void update_tile_lists();
+    std::map<std::string, TileList> tile_lists_;   // by buffer name
+    std::unique_ptr<vk::Buffer> no_tiles_;         // bound where a pass dispatches no tiles
 };
 
 // The specialization constants of a pack with overrides applied: the manifest's values, then

@@ -114,13 +114,17 @@ void FrameGraph::keep_for_next_frame(const std::string& image) {
     throw std::logic_error(fmt::format("the frame graph has no image {} to keep", image));
 }
 
-std::uint32_t FrameGraph::fovea_window(std::uint32_t image_side) const {
-    auto up8 = [](double v) { return (static_cast<std::uint32_t>(std::ceil(v)) + 7u) & ~7u; };
-    // The pixels short of the periphery lie within this many pixels of the fovea's centre.
-    double radius = (settings.foveation + std::max(settings.foveation_blend, 0.0)) * 0.5 * height;
-    // The shader rounds the window's origin down to 8 pixels from the centre's pixel: 8.5 pixels of
-    // slack on the far side, 2 more for float rounding.
-    return std::min(up8(image_side), 2 * up8(radius + 10.5));
+void FrameGraph::dispatch_tiles(FramePass& pass, int view, TileRegion region) {
+    if (!tile_dispatch || pass.persistent_lanes) return;
+    std::string name = fmt::format("tiles.{}.{}", view_name(view), tile_region_name(region));
+    if (!find_buffer(name))
+        add_buffer({name, 4ull * dispatch_tile_capacity(width, height, region), {},
+                    fmt::format("the {} eye's {} tiles that hold pixels (8x8 cells, listed each frame the lens moves)",
+                                view_name(view), tile_region_name(region)),
+                    std::pair{view, region}});
+    pass.bind("FgTiles", name, Access::Read);
+    pass.tile_list = name;
+    pass.specialize[kSpecTileList.id] = 1;
 }
 
 std::int32_t FrameGraph::counter_slot(const std::string& group) {
@@ -233,7 +237,7 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
         const ManifestPass* p = manifest.find_pass(program);
         return p && std::count(p->dispatch_constants.begin(), p->dispatch_constants.end(), c.id) > 0;
     };
-    g.fovea_window_dispatch = g.settings.fovea_window && declares("shade", kSpecFoveaWindow);
+    g.tile_dispatch = g.settings.foveated_tiles && declares("shade", kSpecTileList);
     g.periphery_from_level_2 = declares("conemarch", kSpecPeripheryParent);
     for (const auto& kind : frame_pass_kinds()) kind.add(g);
     for (const auto& p : g.passes_)
@@ -266,12 +270,15 @@ std::string FrameGraph::describe() const {
     auto names = effects.names();
     s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
     s += fmt::format("images and buffers ({}):\n", images_.size() + buffers_.size());
+    std::size_t name_width = 16;
+    for (const auto& i : images_) name_width = std::max(name_width, i.name.size());
+    for (const auto& b : buffers_) name_width = std::max(name_width, b.name.size());
     for (const auto& i : images_) {
-        s += fmt::format("  {:<16} {:>5}x{:<5} {:<8} {}{}\n", i.name, i.width, i.height, image_format_name(i.format), i.about,
-                         i.history ? " (kept for the next frame)" : "");
+        s += fmt::format("  {:<{}} {:>5}x{:<5} {:<8} {}{}\n", i.name, name_width, i.width, i.height,
+                         image_format_name(i.format), i.about, i.history ? " (kept for the next frame)" : "");
     }
     for (const auto& b : buffers_) {
-        s += fmt::format("  {:<16} {:>11} B        {}\n", b.name, b.size, b.about);
+        s += fmt::format("  {:<{}} {:>11} B        {}\n", b.name, name_width, b.size, b.about);
     }
     s += fmt::format("  ({:.1f} MiB)\n", static_cast<double>(memory_bytes()) / (1024.0 * 1024.0));
     auto order = batches();
@@ -281,8 +288,10 @@ std::string FrameGraph::describe() const {
             const FramePass& p = passes_[i];
             std::string dispatch = !p.indirect.empty() ? std::string("indirect")
                                                        : fmt::format("{}x{}{}", p.invocations[0], p.invocations[1],
-                                                                     p.persistent_lanes ? " queue" : "");
-            s += fmt::format("  {:>2} {:<27} {:<10} {:<10} reads [{}] writes [{}]\n", b, p.label, p.program, dispatch,
+                                                                     p.persistent_lanes ? " queue"
+                                                                     : p.tile_list.empty() ? ""
+                                                                                           : " tiles");
+            s += fmt::format("  {:>2} {:<28} {:<10} {:<16} reads [{}] writes [{}]\n", b, p.label, p.program, dispatch,
                              fmt::join(p.reads, ", "), fmt::join(p.writes, ", "));
         }
     return s;

@@ -12,11 +12,13 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include "common/spec_constants.h"
+#include "frame/dispatch_tiles.h"
 #include "frame/shaders/gpu_interface.h"
 #include "frame_settings.h"
 #include "pack/manifest.h"
@@ -47,6 +49,8 @@ struct FrameBuffer {
     std::uint64_t size = 0;
     std::vector<std::uint32_t> reset;
     std::string about;
+    // A tile list the executor writes whenever the frame's lens or fovea moves (dispatch_tiles.h).
+    std::optional<std::pair<int, TileRegion>> tiles;
 };
 
 enum class Access { Read, Write, ReadWrite };
@@ -64,6 +68,7 @@ struct FramePass {
     std::array<std::uint32_t, 3> invocations{1, 1, 1};
     bool persistent_lanes = false;
     std::string indirect;              // buffer whose first three words are the group counts (read)
+    std::string tile_list;             // buffer of the tiles it dispatches, one workgroup each (dispatch_tiles.h)
     std::int32_t counter_slot = -1;    // evaluation counter slot, -1 if the pass evaluates nothing
     // Dispatch constants (common/spec_constants.h) this pass fixes, by id: passes of one program
     // with different values get their own pipelines. The executor adds the frame's projection.
@@ -118,10 +123,6 @@ public:
     void add_pixel_pass(int view, Make make) {
         FramePass full = make(1);
         full.invocations = {width, height, 1};
-        if (foveated(view) && fovea_window_dispatch && !full.persistent_lanes) {
-            full.invocations = {fovea_window(width), fovea_window(height), 1};
-            full.specialize[kSpecFoveaWindow.id] = 1;
-        }
         if (!foveated(view)) {
             add_pass(std::move(full));
             return;
@@ -129,14 +130,16 @@ public:
         FramePass periphery = make(2);
         periphery.label += ".periphery";
         periphery.invocations = {(width + 1) / 2, (height + 1) / 2, 1};
+        dispatch_tiles(full, view, TileRegion::Fovea);
+        dispatch_tiles(periphery, view, TileRegion::Periphery);
         add_pass(std::move(full));
         add_pass(std::move(periphery));
     }
+    // A foveated eye's pass dispatches only the tiles of `region` (its grid: the pass's invocations),
+    // where the pack's shaders can and the pass takes its pixels from no queue.
+    void dispatch_tiles(FramePass& pass, int view, TileRegion region);
     // Fixed foveation applies to the eyes, never to the centre view of stereo reprojection.
     bool foveated(int view) const { return settings.foveation > 0.0 && view != FG_VIEW_CENTRE; }
-    // One side of the window a foveated eye's full-resolution dispatch covers (fg_dispatch_cell in
-    // common.glsl places it): every pixel short of the periphery, whatever the fovea's centre.
-    std::uint32_t fovea_window(std::uint32_t image_side) const;
     std::int32_t counter_slot(const std::string& group);
 
     // The views whose images the frame outputs: both eyes, or the centre alone for a mono panorama.
@@ -155,9 +158,9 @@ public:
     // does not depend on the view direction (no rim, no SSS).
     bool shade_history = false;
     bool manifest_has_tail = false;    // the pack has the tail program
-    // A foveated eye's full-resolution passes dispatch the fovea's window: the fovea_window setting,
-    // where the pack's shaders can place it (an older pack's dispatch the whole image).
-    bool fovea_window_dispatch = false;
+    // A foveated eye's passes dispatch the tiles that hold their pixels: the foveated_tiles setting,
+    // where the pack's shaders can (an older pack's dispatch the whole image).
+    bool tile_dispatch = false;
     // The pack's conemarch can start a foveated periphery's pixels from level 2 (conemarch_pass.cpp).
     bool periphery_from_level_2 = false;
 

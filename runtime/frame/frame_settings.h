@@ -33,9 +33,9 @@ struct FrameSettings {
     bool lens_mask = false;
     double foveation = -1.0;
     double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
-    // Foveated: the full-resolution dispatches cover a window around the fovea, not the whole image
-    // (the same frames; off only to measure or test what the window saves).
-    bool fovea_window = true;
+    // Foveated: each pass dispatches only the 8x8 tiles that hold its pixels, not its whole image
+    // (the same frames; off only to measure or test what the tiles save).
+    bool foveated_tiles = true;
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
     // Set from the pack, not by the user: a pack of precision "double" gets its view origins
     // relative to the camera (gpu_uniforms.h).

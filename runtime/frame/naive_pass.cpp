@@ -13,7 +13,7 @@ void add_naive_passes(FrameGraph& g) {
         bool glow = g.effects.has(Effect::Glow);
         if (glow) g.add_image({"glow." + eye, g.width, g.height, ImageFormat::R32F, "closest approach along the ray"});
         std::string lanes = "lanes." + eye;
-        g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each dispatch" : "(persistent lanes off)"});
+        g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each dispatch" : "(persistent lanes off)", {}});
         std::string rays = add_rays_buffer(g, view, g.width, g.height);
         std::int32_t slot = g.counter_slot("march");
         g.add_pixel_pass(view, [&](int stride) {

@@ -7,7 +7,7 @@ namespace fg {
 std::string add_rays_buffer(FrameGraph& g, int view, std::uint32_t width, std::uint32_t height) {
     std::string rays = std::string("rays.") + view_name(view);
     g.add_buffer({rays, g.persistent_lanes ? 16ull * width * height : 16, {},
-                  g.persistent_lanes ? "each pixel's result as its lane finished it" : "(persistent lanes off)"});
+                  g.persistent_lanes ? "each pixel's result as its lane finished it" : "(persistent lanes off)", {}});
     return rays;
 }
 

@@ -203,29 +203,6 @@ bool fg_dispatch_takes(int view, ivec2 pixel, int stride)
     return (fg_periphery(view, pixel) >= 1.0) == (stride == 2);
 }
 
-// The pixel an invocation of a per-eye pixel pass stands for (the cell of conemarch level `level`),
-// from its cell of the dispatch grid. A foveated eye's full-resolution dispatch
-// (FG_SPEC_FOVEA_WINDOW) covers only a window around the fovea, which FrameGraph::fovea_window
-// sizes to hold every pixel short of the periphery, and its conemarch level 1 the same window at
-// half resolution: llvmpipe runs a shader's every line for a SIMD group whose lanes all return at
-// once, so the periphery's idle invocations cost half as much as live ones. The window is placed
-// in steps of 8 pixels, so a SIMD group holds the same pixels as in a dispatch over the image.
-ivec2 fg_dispatch_cell(int view, int level, int stride, ivec2 cell)
-{
-    if (FG_SPEC_FOVEA_WINDOW != 1) return cell * stride;
-    ivec2 size = fg_view_size(view);
-    // Pixel passes run 8x8 workgroups (the executor checks); gl_WorkGroupSize is not declared yet here.
-    ivec2 window = ivec2(gl_NumWorkGroups.xy * 8u) << level;
-    ivec2 origin = max((ivec2(floor(fg_fovea_centre(view))) & ~7) - window / 2, ivec2(0));
-    // A window as large as the image is the image.
-    return cell * stride + (ivec2(window.x >= size.x ? 0 : origin.x, window.y >= size.y ? 0 : origin.y) >> level);
-}
-
-ivec2 fg_dispatch_pixel(int view, int stride, ivec2 cell)
-{
-    return fg_dispatch_cell(view, 0, stride, cell);
-}
-
 // The hit threshold's footprint in full-resolution pixels: 2 where a pixel stands for its block.
 float fg_footprint(int view, ivec2 pixel)
 {

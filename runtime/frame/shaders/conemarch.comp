@@ -6,6 +6,7 @@
 //! include: lane_queue.glsl
 //! include: march_rays.glsl
 //! include: cone_walk.glsl
+//! include: dispatch_tiles.glsl
 // Progressive cone marching (Fulcrum's Fractus, Framestore's VR fractals), one dispatch per level
 // from coarse to fine. A level-k pixel marches a cone that covers its 2^k x 2^k footprint, starting
 // where its parent stopped, and stops as soon as the cone may touch a surface: its distance is a
@@ -93,7 +94,7 @@ struct FgFineRay {
 // The parent level's bound for a full-resolution pixel, or where its ray enters the bounds. A pixel
 // of the foveated periphery stands for its 2x2 block, as a level-1 cell does, and marches with that
 // footprint: the runtime starts it from level 2 (FG_SPEC_PERIPHERY_PARENT), and level 1 then
-// covers only the fovea's window.
+// covers only the fovea's tiles.
 float fg_parent_bound(ivec2 pixel, ivec2 full, vec3 ro, vec3 rd)
 {
     int parent = pc.stride == 2 && FG_SPEC_PERIPHERY_PARENT > 1 ? FG_SPEC_PERIPHERY_PARENT : 1;
@@ -275,7 +276,7 @@ void main()
         return;
     }
     ivec4 rect = fg_level_rect(fg_full_resolution() ? 0 : pc.level, full);
-    ivec2 pixel = fg_dispatch_cell(pc.view, fg_full_resolution() ? 0 : pc.level, pc.stride, fg_invocation_cell());
+    ivec2 pixel = fg_dispatch_cell(pc.stride, fg_invocation_cell());
     if (pixel.x >= rect.z || pixel.y >= rect.w) return;
     if (fg_full_resolution() && !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_skip_outside_lens(pixel, rect, full)) return;

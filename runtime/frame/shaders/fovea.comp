@@ -1,6 +1,7 @@
 //! pass: fovea
 //! needs: nothing
 //! when: always
+//! include: dispatch_tiles.glsl
 // Fixed foveation's fill. Beyond the fovea only one pixel of each 2x2 block, the even one, was
 // marched and shaded (fg_dispatch_takes); this fills in the other three by bilinear interpolation between the marched
 // pixels around them, and across the band between fovea and periphery blends the full-resolution
@@ -15,7 +16,7 @@ layout(push_constant) uniform FgFoveaPush { FoveaPush pc; };
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 pixel = fg_dispatch_cell(1, ivec2(gl_GlobalInvocationID.xy));
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
     if (((pixel.x | pixel.y) & 1) == 0) return;

@@ -4,6 +4,7 @@
 //! include: march_counters.glsl
 //! include: lane_queue.glsl
 //! include: march_rays.glsl
+//! include: dispatch_tiles.glsl
 // The baseline: plain sphere tracing of one eye at full resolution, every pixel on its own. Every
 // speed figure is a ratio against this pass, and tests use it as a reference. With
 // FG_PERSISTENT_LANES its lanes take pixels from a queue (lane_queue.glsl): the stronger baseline,
@@ -133,7 +134,7 @@ void main()
     if (FG_PERSISTENT_LANES) {
         fg_naive_persistent(size);
     } else {
-        ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, fg_invocation_cell());
+        ivec2 pixel = fg_dispatch_cell(pc.stride, fg_invocation_cell());
         if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
         if (fg_skip_outside_lens(pixel)) return;
         FgNaiveRay r = fg_naive_begin(pixel, size);

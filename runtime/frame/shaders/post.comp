@@ -2,6 +2,7 @@
 //! needs: distance
 //! when: any-effect fog glow vignette
 //! include: post_effects.glsl
+//! include: dispatch_tiles.glsl
 // Post effects the pack lists, and only those (post_effects.glsl); then tonemapping into the final
 // image. (Foveation has its own pass, fovea.comp, that runs after this one.)
 
@@ -16,7 +17,7 @@ layout(push_constant) uniform FgPostPush { PostPush pc; };
 
 void main()
 {
-    ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, ivec2(gl_GlobalInvocationID.xy));
+    ivec2 pixel = fg_dispatch_cell(pc.stride, ivec2(gl_GlobalInvocationID.xy));
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {

@@ -2,6 +2,7 @@
 //! needs: distance
 //! when: always
 //! include: march_counters.glsl
+//! include: dispatch_tiles.glsl
 // Stereo reprojection (after van de Hoef and Zalmstra's gather, as Framestore used it): each eye's
 // ray walks the centre eye's conemarch levels instead of the scene. A point of the eye ray is
 // empty space if it is closer to the centre eye than the centre's lower bound for the pixel it
@@ -93,7 +94,7 @@ float walk_level(int level, float t, float t_max)
 
 void main()
 {
-    ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, fg_invocation_cell());
+    ivec2 pixel = fg_dispatch_cell(pc.stride, fg_invocation_cell());
     ivec2 size = fg_view_size(pc.view);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {

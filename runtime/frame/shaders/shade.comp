@@ -2,6 +2,7 @@
 //! needs: surface
 //! when: always
 //! include: post_effects.glsl
+//! include: dispatch_tiles.glsl
 //! include-after-scene: shading.glsl
 // Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a
 // finite-difference normal only if something needs it, and the background for misses.
@@ -87,7 +88,7 @@ bool fg_reuse_previous_frame(vec3 p, float t, out vec4 color)
 
 void main()
 {
-    ivec2 pixel = fg_dispatch_pixel(pc.view, pc.stride, ivec2(gl_GlobalInvocationID.xy));
+    ivec2 pixel = fg_dispatch_cell(pc.stride, ivec2(gl_GlobalInvocationID.xy));
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {

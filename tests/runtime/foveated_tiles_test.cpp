@@ -1,0 +1,191 @@
+// A foveated eye's passes dispatch only the 8x8 tiles that hold their pixels (dispatch_tiles.h,
+// shaders/dispatch_tiles.glsl): the fovea's passes and its conemarch level 1 the tiles short of the
+// periphery, the periphery's the tiles beyond, the fovea pass the tiles it fills. A CPU rasteriser
+// runs a whole shader for a SIMD group whose lanes have nothing to do. A list must hold every pixel
+// the shader takes, and frames must be bit-identical to dispatches over the whole image, also for
+// a headset's off-centre lenses, where the lists follow the lens centre.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "frame/dispatch_tiles.h"
+#include "frame/frame_executor.h"
+#include "frame/gpu_uniforms.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::pass_named;
+using fg::test::RuntimeTest;
+
+namespace {
+
+class FoveatedTiles : public RuntimeTest {};
+
+constexpr std::uint32_t kWidth = 160, kHeight = 120;
+
+FrameSettings foveated(StereoMode stereo, bool tiles) {
+    FrameSettings fs;
+    fs.width = kWidth;
+    fs.height = kHeight;
+    fs.stereo = stereo;
+    fs.lens_mask = true;
+    fs.foveation = 0.4;
+    fs.foveated_tiles = tiles;
+    fs.count_evaluations = true;
+    return fs;
+}
+
+struct Frame {
+    std::vector<std::byte> left, right, depth_left, depth_right;
+    double evaluations_per_pixel = 0.0;
+};
+
+// Both eyes through lenses whose centres sit off the image centre, as a headset's do (the
+// left lens's towards the nose: the image's right).
+Frame render(const Pack& pack, const FrameSettings& fs) {
+    StereoSettings stereo;
+    stereo.width = fs.width;
+    stereo.height = fs.height;
+    Fov left{-1.05, 0.8, -0.95, 0.7}, right{-0.8, 1.05, -0.95, 0.7};
+    StereoViews views = make_stereo_views(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}), left, right, stereo);
+    FrameExecutor executor(test::shared_context(), pack,
+                           FrameGraph::build(pack.manifest, fs, views.centre.width, views.centre.height));
+    executor.set_frame(make_gpu_frame(views, executor.graph().settings, 0.0, 1.0, 0));
+    Frame f;
+    f.evaluations_per_pixel = executor.run().evaluations_per_pixel;
+    f.left = executor.download("final.left");
+    f.right = executor.download("final.right");
+    f.depth_left = executor.download("depth.left");
+    f.depth_right = executor.download("depth.right");
+    return f;
+}
+
+// fg_periphery in common.glsl, in float as the shader computes it.
+float periphery(const GpuFrame& f, int view, glm::ivec2 pixel) {
+    const GpuView& v = f.views[view];
+    glm::vec2 size(f.eye_size);
+    glm::vec2 centre = (v.lens_radii.x > 0.0f ? v.lens_centre : glm::vec2(0.5f)) * size;
+    float r = glm::length(glm::vec2(pixel) + 0.5f - centre) / (0.5f * size.y);
+    return std::clamp((r - f.fovea_radius) / std::max(f.fovea_blend, 1e-6f), 0.0f, 1.0f);
+}
+
+GpuFrame frame_with(std::uint32_t w, std::uint32_t h, glm::vec2 lens_centre, float fovea, float blend) {
+    GpuFrame f{};
+    f.eye_size = {w, h};
+    f.fovea_radius = fovea;
+    f.fovea_blend = blend;
+    for (auto& v : f.views) {
+        v.lens_centre = lens_centre;
+        v.lens_radii = {0.5f, 0.5f};
+    }
+    return f;
+}
+
+}  // namespace
+
+TEST(DispatchTiles, every_pixel_a_pass_takes_lies_in_a_listed_tile_and_few_others_are_listed) {
+    // A centred fovea, a headset's lens towards the nose, one at the image's edge, a fovea wider
+    // than the image, odd sizes, and a blend of 0 (the shader divides by at least 1e-6).
+    struct Case {
+        std::uint32_t w, h;
+        glm::vec2 centre;
+        float fovea, blend;
+    };
+    for (const Case& c : {Case{160, 120, {0.5f, 0.5f}, 0.4f, 0.15f}, Case{257, 131, {0.57f, 0.46f}, 0.5f, 0.15f},
+                          Case{96, 96, {0.02f, 0.97f}, 0.3f, 0.1f}, Case{64, 48, {0.5f, 0.5f}, 3.0f, 0.15f},
+                          Case{200, 200, {0.43f, 0.5f}, 0.25f, 0.0f}}) {
+        SCOPED_TRACE(::testing::Message() << c.w << "x" << c.h << " centre " << c.centre.x << "," << c.centre.y
+                                          << " fovea " << c.fovea);
+        GpuFrame f = frame_with(c.w, c.h, c.centre, c.fovea, c.blend);
+        auto listed = [&](TileRegion region) {
+            std::vector<std::uint32_t> tiles = list_dispatch_tiles(f, 0, region);
+            EXPECT_LE(tiles.size(), dispatch_tile_capacity(c.w, c.h, region));
+            return [tiles](glm::ivec2 cell) {
+                return std::count(tiles.begin(), tiles.end(), std::uint32_t(cell.x / 8) | std::uint32_t(cell.y / 8) << 16) == 1;
+            };
+        };
+        auto fovea = listed(TileRegion::Fovea), level1 = listed(TileRegion::FoveaLevel1),
+             outer = listed(TileRegion::Periphery), fill = listed(TileRegion::Fill);
+        std::size_t missing = 0, fovea_pixels = 0;
+        for (int y = 0; y < int(c.h); ++y)
+            for (int x = 0; x < int(c.w); ++x) {
+                glm::ivec2 p(x, y);
+                float s = periphery(f, 0, p);
+                if (s < 1.0f) {
+                    // A fovea pixel, and the level-1 cell it starts from.
+                    ++fovea_pixels;
+                    missing += !fovea(p) + !level1(p / 2);
+                } else if (x % 2 == 0 && y % 2 == 0) {
+                    missing += !outer(p / 2);
+                }
+                if (s > 0.0f && (x & y & 1)) missing += !fill(p);
+            }
+        EXPECT_EQ(missing, 0u);
+        // Tight: a listed fovea tile holds a pixel within 2 pixels of the fovea's edge; without a
+        // periphery nothing is listed for it.
+        const float edge = (c.fovea + std::max(c.blend, 1e-6f)) * 0.5f * float(c.h) + 2.0f;
+        const glm::vec2 centre = c.centre * glm::vec2(c.w, c.h);
+        for (std::uint32_t t : list_dispatch_tiles(f, 0, TileRegion::Fovea)) {
+            bool near = false;
+            for (std::uint32_t y = (t >> 16) * 8; y < std::min((t >> 16) * 8 + 8, c.h); ++y)
+                for (std::uint32_t x = (t & 0xffff) * 8; x < std::min((t & 0xffff) * 8 + 8, c.w); ++x)
+                    near = near || glm::length(glm::vec2(x, y) + 0.5f - centre) < edge;
+            EXPECT_TRUE(near) << "tile " << (t & 0xffff) << "," << (t >> 16);
+        }
+        if (fovea_pixels == std::size_t(c.w) * c.h) EXPECT_TRUE(list_dispatch_tiles(f, 0, TileRegion::Periphery).empty());
+    }
+}
+
+TEST_F(FoveatedTiles, a_foveated_eyes_passes_dispatch_their_tiles_and_nothing_else_does) {
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    FrameGraph g = FrameGraph::build(pack.manifest, foveated(StereoMode::PerEye, true), kWidth, kHeight);
+    const std::pair<const char*, const char*> expected[] = {
+        {"conemarch.left.L0", "tiles.left.fovea"},         {"shade.left", "tiles.left.fovea"},
+        {"conemarch.right.L0", "tiles.right.fovea"},       {"conemarch.left.L0.periphery", "tiles.left.periphery"},
+        {"shade.right.periphery", "tiles.right.periphery"}, {"conemarch.left.L1", "tiles.left.fovea_L1"},
+        {"fovea.left", "tiles.left.fill"}};
+    for (const auto& [label, tiles] : expected) {
+        SCOPED_TRACE(label);
+        const FramePass& p = pass_named(g, label);
+        EXPECT_EQ(p.tile_list, tiles);
+        EXPECT_EQ(p.specialize.at(kSpecTileList.id), 1);
+        EXPECT_TRUE(p.reads_resource(tiles));
+        ASSERT_NE(g.find_buffer(tiles), nullptr);
+    }
+    // The coarser levels are small and whole; the periphery's pixels start from level 2.
+    EXPECT_TRUE(pass_named(g, "conemarch.left.L2").tile_list.empty());
+    EXPECT_EQ(pass_named(g, "conemarch.left.L0.periphery").specialize.at(kSpecPeripheryParent.id), 2);
+    FrameSettings reuse = foveated(StereoMode::PerEye, true);
+    reuse.knobs["reuse"] = 1.0;   // walks every cell of the old level 1: it is marched whole, and the periphery starts there
+    FrameGraph with_reuse = FrameGraph::build(pack.manifest, reuse, kWidth, kHeight);
+    EXPECT_TRUE(pass_named(with_reuse, "conemarch.left.L1").tile_list.empty());
+    EXPECT_FALSE(pass_named(with_reuse, "conemarch.left.L0.periphery").specialize.count(kSpecPeripheryParent.id));
+    FrameGraph whole = FrameGraph::build(pack.manifest, foveated(StereoMode::PerEye, false), kWidth, kHeight);
+    EXPECT_TRUE(pass_named(whole, "shade.left").tile_list.empty());
+    EXPECT_EQ(pass_named(whole, "shade.left").invocations, (std::array<std::uint32_t, 3>{kWidth, kHeight, 1}));
+    // A pack whose shaders cannot map tiles (an older fgc's) dispatches the whole image.
+    for (auto& pass : pack.manifest.passes) std::erase(pass.dispatch_constants, kSpecTileList.id);
+    FrameGraph old = FrameGraph::build(pack.manifest, foveated(StereoMode::PerEye, true), kWidth, kHeight);
+    for (const FramePass& p : old.passes()) EXPECT_TRUE(p.tile_list.empty()) << p.label;
+}
+
+TEST_F(FoveatedTiles, frames_are_bit_identical_to_dispatches_over_the_whole_image) {
+    // The bulb shades straight into the final image; the KIFS's glow adds the post pass.
+    for (const char* graph : {"graphs/gallery/mandelbulb.json", "graphs/gallery/kifs.json"}) {
+        Pack pack = test::compile_pack(test::read_source_file(graph));
+        for (StereoMode stereo : {StereoMode::Naive, StereoMode::PerEye, StereoMode::Reproject}) {
+            SCOPED_TRACE(std::string(graph) + " " + stereo_mode_name(stereo));
+            Frame tiled = render(pack, foveated(stereo, true));
+            Frame whole = render(pack, foveated(stereo, false));
+            EXPECT_TRUE(tiled.left == whole.left);
+            EXPECT_TRUE(tiled.right == whole.right);
+            EXPECT_TRUE(tiled.depth_left == whole.depth_left);
+            EXPECT_TRUE(tiled.depth_right == whole.depth_right);
+            // The same rays; per-eye, level 1 no longer marches the periphery's cells, which no pixel reads.
+            if (stereo == StereoMode::PerEye) EXPECT_LT(tiled.evaluations_per_pixel, whole.evaluations_per_pixel);
+            else EXPECT_EQ(tiled.evaluations_per_pixel, whole.evaluations_per_pixel);
+        }
+    }
+}
