@@ -332,17 +332,15 @@ const vk::Access kPassAccess{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELIN
                              VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT};
 
-// Persistent lanes: enough workgroups to keep the device full and the queue's refills rare, about
-// this many pixels per lane on average.
-constexpr std::uint64_t kPixelsPerPersistentLane = 16;
-
 std::array<std::uint32_t, 3> group_count(const FramePass& pass, const ManifestPass& mp) {
     if (pass.persistent_lanes) {
-        std::uint64_t pixels = std::uint64_t(pass.invocations[0]) * pass.invocations[1] * pass.invocations[2];
-        std::uint64_t lanes = std::uint64_t(mp.local_size[0]) * mp.local_size[1] * mp.local_size[2];
-        return {static_cast<std::uint32_t>(std::max<std::uint64_t>(1, (pixels + lanes * kPixelsPerPersistentLane - 1) /
-                                                                           (lanes * kPixelsPerPersistentLane))),
-                1, 1};
+        // Enough workgroups to keep the device full and the queue's refills rare: half a lane's
+        // bound per lane on average (FG_LANE_PIXELS), so the lanes can take every index of the
+        // queue (whole 8x8 tiles) even when the first groups to run take all they may.
+        auto tiles = [](std::uint32_t n) { return (std::uint64_t(n) + 7) / 8; };
+        std::uint64_t indices = tiles(pass.invocations[0]) * tiles(pass.invocations[1]) * 64 * pass.invocations[2];
+        std::uint64_t per_group = std::uint64_t(mp.local_size[0]) * mp.local_size[1] * mp.local_size[2] * (FG_LANE_PIXELS / 2);
+        return {static_cast<std::uint32_t>(std::max<std::uint64_t>(1, (indices + per_group - 1) / per_group)), 1, 1};
     }
     std::array<std::uint32_t, 3> groups{};
     for (int i = 0; i < 3; ++i) groups[i] = (pass.invocations[i] + mp.local_size[i] - 1) / std::max(1u, mp.local_size[i]);

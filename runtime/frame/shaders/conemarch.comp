@@ -242,6 +242,7 @@ void fg_fine_persistent(ivec2 size)
     r.marching = false;
     bool ended = false;   // r is a ray that ended and is not written yet
     bool dry = false;
+    uint taken = 0u;      // pixels this lane took (FG_LANE_PIXELS)
     while (true) {
         if (ended) fg_fine_finish(r);
         ended = false;
@@ -255,6 +256,7 @@ void fg_fine_persistent(ivec2 size)
                 r = fg_fine_begin(pixel, size);
                 ended = !r.marching;
             }
+            dry = dry || ++taken == FG_LANE_PIXELS;
         }
         if (dry && !r.marching && !ended) break;
         while (fg_lanes_burst(r.marching)) {

@@ -33,6 +33,13 @@ const uint FG_PROJECTION_ODS = 2u;
 // fractal iterations the evaluations ran.
 const uint FG_COUNTER_WORDS = 6u;
 
+// Persistent lanes (lane_queue.glsl): the most pixels one lane takes from the queue in a dispatch.
+// llvmpipe ends every loop of a shader invocation once all its loops together ran 65535 iterations
+// (LP_MAX_TGSI_LOOP_ITERATIONS), and it runs a dispatch's workgroups in order on a few threads, so
+// unbounded lanes of its first workgroups would drain the queue and be cut off mid-ray, their
+// pixels never written. The executor dispatches groups for twice the pixels at this bound.
+const uint FG_LANE_PIXELS = 32u;
+
 // ODS fades the eyes' separation to none towards the poles (from 60 degrees of latitude to 90, a
 // smoothstep): near the zenith and nadir every column's eye looks at the same point from another
 // place on the IPD circle, which swirls in a headset (Google's ODS guidance does the same).

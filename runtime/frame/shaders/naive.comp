@@ -103,6 +103,7 @@ void fg_naive_persistent(ivec2 size)
     r.marching = false;
     bool ended = false;   // r is a ray that ended and is not written yet
     bool dry = false;
+    uint taken = 0u;      // pixels this lane took (FG_LANE_PIXELS)
     while (true) {
         if (ended) fg_naive_finish(r);
         ended = false;
@@ -116,6 +117,7 @@ void fg_naive_persistent(ivec2 size)
                 r = fg_naive_begin(pixel, size);
                 ended = !r.marching;
             }
+            dry = dry || ++taken == FG_LANE_PIXELS;
         }
         if (dry && !r.marching && !ended) break;
         while (fg_lanes_burst(r.marching)) {
