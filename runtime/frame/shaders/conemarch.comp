@@ -247,16 +247,11 @@ void fg_fine_persistent(ivec2 size)
         if (ended) fg_fine_finish(r);
         ended = false;
         if (!r.marching && !dry) {
-            ivec2 cell = fg_work_cell(fg_take_work(true, uint(pc.stride - 1)), grid);
-            ivec2 pixel = cell * pc.stride;
-            dry = cell.x < 0;
-            // Pixels outside the lens get their miss from the resolve pass.
-            if (!dry && cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(pc.view, pixel, pc.stride) &&
-                !fg_outside_lens(pc.view, pixel)) {
+            ivec2 pixel;
+            if (fg_lane_takes_pixel(pc.view, pc.stride, grid, dry, taken, pixel)) {
                 r = fg_fine_begin(pixel, size);
                 ended = !r.marching;
             }
-            dry = dry || ++taken == FG_LANE_PIXELS;
         }
         if (dry && !r.marching && !ended) break;
         while (fg_lanes_burst(r.marching)) {

@@ -50,3 +50,17 @@ ivec2 fg_work_cell(uint index, ivec2 grid)
     if (tile / tiles_x >= (uint(grid.y) + 7u) / 8u) return ivec2(-1);
     return ivec2(cell);
 }
+
+// A lane without a ray takes the next cell of the queue (its dispatch's queue word: stride - 1).
+// True, with its pixel, when the dispatch marches that pixel: in the grid, taken at this stride
+// (fg_dispatch_takes), inside the lens (the resolve pass gives the others their miss). `dry` turns
+// true once the queue runs out or the lane has taken its share (FG_LANE_PIXELS: llvmpipe's loop
+// limit, gpu_interface.h); `taken` counts that share.
+bool fg_lane_takes_pixel(int view, int stride, ivec2 grid, inout bool dry, inout uint taken, out ivec2 pixel)
+{
+    ivec2 cell = fg_work_cell(fg_take_work(true, uint(stride - 1)), grid);
+    pixel = cell * stride;
+    dry = cell.x < 0 || ++taken == FG_LANE_PIXELS;
+    return cell.x >= 0 && cell.x < grid.x && cell.y < grid.y && fg_dispatch_takes(view, pixel, stride) &&
+           !fg_outside_lens(view, pixel);
+}
