@@ -113,9 +113,8 @@ TEST_F(LaneEfficiency, persistent_lanes_keep_level_0_busy_in_the_filled_view) {
     std::printf("%s\n", figures.c_str());
     EXPECT_GT(cone, 0.2);
     EXPECT_LT(cone, 0.85) << "without refills the slowest ray of a group keeps its lanes waiting";
-    // 0.72 -> 0.82 for level 0, 0.82 -> 0.83 for naive. The issue asks 0.85 of level 0; the 0.89 once
-    // measured here came from the lanes of llvmpipe's first workgroups taking the whole queue, which
-    // lost pixels (LaneQueue): bounded lanes end their share unevenly, and those tails idle.
-    EXPECT_GE(cone_persistent, cone + 0.06);
-    EXPECT_GT(naive_persistent, naive);
+    // 0.73 -> 0.88 for level 0, 0.84 -> 0.90 for naive, refilling once one lane in eight is idle
+    // (FG_BURST_SHARE); the issue asks 0.85 of level 0. Refilling at three quarters gave 0.82.
+    EXPECT_GE(cone_persistent, 0.85);
+    EXPECT_GT(naive_persistent, naive + 0.03);
 }

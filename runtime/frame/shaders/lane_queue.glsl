@@ -10,7 +10,7 @@
 
 layout(set = 0, binding = 13, std430) buffer FgLaneQueue { uint next[]; } fg_lane_queue;
 
-const float FG_BURST_SHARE = 0.75;
+const float FG_BURST_SHARE = 0.875;
 
 // Whether a burst of marching goes on: while at least FG_BURST_SHARE of the subgroup's lanes (or
 // all of those still working) have a ray. Lanes are refilled between bursts, all at once, rather
