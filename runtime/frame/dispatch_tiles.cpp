@@ -18,7 +18,7 @@ struct Grid {
 };
 
 Grid region_grid(std::uint32_t width, std::uint32_t height, TileRegion region) {
-    if (region == TileRegion::Fovea || region == TileRegion::Fill) return {width, height, 1, false};
+    if (region == TileRegion::Fovea || region == TileRegion::Fill || region == TileRegion::Whole) return {width, height, 1, false};
     return {(width + 1) / 2, (height + 1) / 2, 2, region == TileRegion::Periphery};
 }
 
@@ -30,6 +30,7 @@ const char* tile_region_name(TileRegion region) {
         case TileRegion::FoveaLevel1: return "fovea_L1";
         case TileRegion::Periphery: return "periphery";
         case TileRegion::Fill: return "fill";
+        case TileRegion::Whole: return "whole";
     }
     return "?";
 }
@@ -39,7 +40,7 @@ std::uint32_t dispatch_tile_capacity(std::uint32_t width, std::uint32_t height, 
     return ((g.width + 7) / 8) * ((g.height + 7) / 8);
 }
 
-std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region) {
+std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region, OutsideLens outside) {
     const std::uint32_t width = frame.eye_size.x, height = frame.eye_size.y;
     const GpuView& v = frame.views[view];
     // fg_fovea_centre and fg_periphery in common.glsl, in pixels.
@@ -49,6 +50,12 @@ std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, 
     const double blend_start = frame.fovea_radius * half;                                      // fg_periphery > 0 beyond
     const double periphery = (frame.fovea_radius + std::max(frame.fovea_blend, 1e-6f)) * half;  // fg_periphery >= 1 beyond
     const Grid g = region_grid(width, height, region);
+    // The lens ellipse in pixels (fg_outside_lens). A coarse cell tests its block's centre against
+    // radii grown by the block: a tile's pixels grown by a cell and the margin hold every point the
+    // shader may find inside.
+    const bool lens = outside == OutsideLens::Left && v.lens_radii.x > 0.0f;
+    const double lens_rx = v.lens_radii.x * width, lens_ry = v.lens_radii.y * height;
+    const double lens_grow = g.scale + kMarginPixels;
     std::vector<std::uint32_t> tiles;
     for (std::uint32_t ty = 0; ty * 8 < g.height; ++ty)
         for (std::uint32_t tx = 0; tx * 8 < g.width; ++tx) {
@@ -63,12 +70,20 @@ std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, 
             auto [y0, y1] = span(ty, g.height, height);
             const double nearest = std::hypot(std::clamp(cx, x0, x1) - cx, std::clamp(cy, y0, y1) - cy);
             const double farthest = std::hypot(std::max(cx - x0, x1 - cx), std::max(cy - y0, y1 - cy));
+            if (lens) {
+                auto reach = [&](double lo, double hi, double centre, double radius) {
+                    return (std::clamp(centre, lo - lens_grow, hi + lens_grow) - centre) / radius;
+                };
+                const double qx = reach(x0, x1, cx, lens_rx), qy = reach(y0, y1, cy, lens_ry);
+                if (qx * qx + qy * qy > 1.0) continue;
+            }
             bool takes = false;
             switch (region) {
                 case TileRegion::Fovea:
                 case TileRegion::FoveaLevel1: takes = nearest < periphery + kMarginPixels; break;
                 case TileRegion::Periphery: takes = farthest >= periphery - kMarginPixels; break;
                 case TileRegion::Fill: takes = farthest > blend_start - kMarginPixels; break;
+                case TileRegion::Whole: takes = true; break;
             }
             if (takes) tiles.push_back(tx | ty << 16);
         }

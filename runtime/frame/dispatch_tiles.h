@@ -1,8 +1,9 @@
 #pragma once
-// Which 8x8 tiles of its grid a foveated eye's pass dispatches: only those holding pixels the pass
-// takes (shaders/dispatch_tiles.glsl maps each workgroup to its tile). llvmpipe runs every line of
-// a shader for a SIMD group whose lanes all return at once, so the fovea's passes would otherwise
-// pay for the periphery's pixels and the periphery's for the fovea's.
+// Which 8x8 tiles of its grid an eye's pass dispatches: only those holding pixels the pass takes
+// (shaders/dispatch_tiles.glsl maps each workgroup to its tile). llvmpipe runs every line of a
+// shader for a SIMD group whose lanes all return at once, so the fovea's passes would otherwise pay
+// for the periphery's pixels, the periphery's for the fovea's, and every pass for the pixels the
+// lens hides (an eighth of an eye's cost in a lens-masked frame).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,14 +17,22 @@ enum class TileRegion {
     FoveaLevel1,   // conemarch level 1's cells over those pixels
     Periphery,     // the periphery's grid (one invocation per 2x2 block): even pixels with fg_periphery >= 1
     Fill,          // full resolution: the pixels the fovea pass fills or blends (fg_periphery > 0)
+    Whole,         // full resolution, every pixel: an eye without foveation
 };
+
+// Whether a list leaves out the tiles wholly outside the lens. Its passes write those pixels' miss
+// and black, the same every frame, so once every image (both versions of a history image) holds
+// them a list may leave them out (FrameExecutor: for as long as the lens stays put).
+enum class OutsideLens { Listed, Left };
 
 const char* tile_region_name(TileRegion region);
 
 // The tiles, each packed as x | y << 16 in units of 8 cells of the region's grid, in rows. A tile
 // is listed when one of its pixels may be taken (a pixel's margin against float rounding): a
-// superset of what the shader decides per pixel (fg_dispatch_takes), never a subset.
-std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region);
+// superset of what the shader decides per pixel (fg_dispatch_takes, and with OutsideLens::Left
+// fg_outside_lens), never a subset.
+std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region,
+                                               OutsideLens outside = OutsideLens::Listed);
 
 // How many tiles the region's grid has at most (the buffer that holds the list).
 std::uint32_t dispatch_tile_capacity(std::uint32_t width, std::uint32_t height, TileRegion region);

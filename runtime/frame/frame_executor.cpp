@@ -177,6 +177,7 @@ void FrameExecutor::make_resources() {
         auto& versions = images_[img.name];
         for (int i = 0; i < (img.history ? 2 : 1); ++i)
             versions.push_back(std::make_unique<vk::StorageImage>(ctx_, vk_format(img.format), VkExtent2D{img.width, img.height}));
+        frames_to_fill_ = std::max<std::uint64_t>(frames_to_fill_, versions.size());
     }
     for (const auto& b : graph_.buffers())
         buffers_[b.name] = std::make_unique<vk::Buffer>(
@@ -277,13 +278,21 @@ void FrameExecutor::update_tile_lists() {
         if (!b.tiles) continue;
         const auto [view, region] = *b.tiles;
         const GpuView& v = frame_data_.views[view];
-        std::array<float, 7> placed_by{static_cast<float>(frame_data_.eye_size.x), static_cast<float>(frame_data_.eye_size.y),
-                                       v.lens_centre.x, v.lens_centre.y, v.lens_radii.x > 0.0f ? 1.0f : 0.0f,
+        std::array<float, 8> placed_by{static_cast<float>(frame_data_.eye_size.x), static_cast<float>(frame_data_.eye_size.y),
+                                       v.lens_centre.x, v.lens_centre.y, v.lens_radii.x, v.lens_radii.y,
                                        frame_data_.fovea_radius, frame_data_.fovea_blend};
         TileList& list = tile_lists_[b.name];
-        if (list.written && list.placed_by == placed_by) continue;
-        list.placed_by = placed_by;
-        list.tiles = list_dispatch_tiles(frame_data_, view, region);
+        if (!list.placed || list.placed_by != placed_by) {
+            list.placed = true;
+            list.placed_by = placed_by;
+            list.placed_at = frames_run_;
+            list.outside_left = false;
+        } else if (!list.outside_left && frames_run_ >= list.placed_at + frames_to_fill_) {
+            list.outside_left = true;
+        } else {
+            continue;
+        }
+        list.tiles = list_dispatch_tiles(frame_data_, view, region, list.outside_left ? OutsideLens::Left : OutsideLens::Listed);
         if (list.tiles.size() * 4 > b.size)
             throw std::logic_error(fmt::format("{} tiles for {}, which holds {}", list.tiles.size(), b.name, b.size / 4));
         list.written = false;

@@ -103,11 +103,17 @@ private:
     bool history_valid_ = false;
     // The tile lists of the graph's tile buffers, remade only when what places them changes (at a
     // headset's resolution a list has tens of thousands of tiles) and written before the next frame.
+    // A list holds the tiles outside the lens until every image holds their pixels (frames_to_fill_
+    // frames after it was placed: two where history images alternate), then leaves them out.
     struct TileList {
-        std::array<float, 7> placed_by{};   // eye size, lens centre and whether the mask is on, fovea radius and blend
+        std::array<float, 8> placed_by{};   // eye size, lens centre and radii, fovea radius and blend
+        std::uint64_t placed_at = 0;        // the frame it was placed for
+        bool placed = false;
+        bool outside_left = false;          // the tiles outside the lens are left out
         std::vector<std::uint32_t> tiles;
         bool written = false;
     };
+    std::uint64_t frames_to_fill_ = 1;
     void update_tile_lists();
     std::map<std::string, TileList> tile_lists_;   // by buffer name
     std::unique_ptr<vk::Buffer> no_tiles_;         // bound where a pass dispatches no tiles

@@ -237,7 +237,7 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
         const ManifestPass* p = manifest.find_pass(program);
         return p && std::count(p->dispatch_constants.begin(), p->dispatch_constants.end(), c.id) > 0;
     };
-    g.tile_dispatch = g.settings.foveated_tiles && declares("shade", kSpecTileList);
+    g.tile_dispatch = g.settings.tile_dispatch && declares("shade", kSpecTileList);
     g.periphery_from_level_2 = declares("conemarch", kSpecPeripheryParent);
     for (const auto& kind : frame_pass_kinds()) kind.add(g);
     for (const auto& p : g.passes_)

@@ -119,11 +119,13 @@ public:
     void keep_for_next_frame(const std::string& image);
     // A full-resolution pass of an eye, made by `make(stride)`: with foveation it runs as two
     // dispatches, all pixels short of the periphery (stride 1) and every other pixel beyond (stride 2).
+    // An eye's dispatches take tiles, so that they can leave out those the lens hides.
     template <class Make>
     void add_pixel_pass(int view, Make make) {
         FramePass full = make(1);
         full.invocations = {width, height, 1};
         if (!foveated(view)) {
+            if (view != FG_VIEW_CENTRE) dispatch_tiles(full, view, TileRegion::Whole);
             add_pass(std::move(full));
             return;
         }
@@ -135,8 +137,8 @@ public:
         add_pass(std::move(full));
         add_pass(std::move(periphery));
     }
-    // A foveated eye's pass dispatches only the tiles of `region` (its grid: the pass's invocations),
-    // where the pack's shaders can and the pass takes its pixels from no queue.
+    // An eye's pass dispatches only the tiles of `region` (its grid: the pass's invocations), where
+    // the pack's shaders can and the pass takes its pixels from no queue.
     void dispatch_tiles(FramePass& pass, int view, TileRegion region);
     // Fixed foveation applies to the eyes, never to the centre view of stereo reprojection.
     bool foveated(int view) const { return settings.foveation > 0.0 && view != FG_VIEW_CENTRE; }
@@ -158,8 +160,9 @@ public:
     // does not depend on the view direction (no rim, no SSS).
     bool shade_history = false;
     bool manifest_has_tail = false;    // the pack has the tail program
-    // A foveated eye's passes dispatch the tiles that hold their pixels: the foveated_tiles setting,
-    // where the pack's shaders can (an older pack's dispatch the whole image).
+    // An eye's passes dispatch the tiles that hold their pixels (the fovea's, the periphery's, the
+    // lens's): the tile_dispatch setting, where the pack's shaders can (an older pack's dispatch the
+    // whole image).
     bool tile_dispatch = false;
     // The pack's conemarch can start a foveated periphery's pixels from level 2 (conemarch_pass.cpp).
     bool periphery_from_level_2 = false;

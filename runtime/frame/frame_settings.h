@@ -33,9 +33,10 @@ struct FrameSettings {
     bool lens_mask = false;
     double foveation = -1.0;
     double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
-    // Foveated: each pass dispatches only the 8x8 tiles that hold its pixels, not its whole image
-    // (the same frames; off only to measure or test what the tiles save).
-    bool foveated_tiles = true;
+    // Each pass of an eye dispatches only the 8x8 tiles that hold its pixels (the fovea's, the
+    // periphery's, those the lens shows), not its whole image (the same frames; off only to measure
+    // or test what the tiles save).
+    bool tile_dispatch = true;
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
     // Set from the pack, not by the user: a pack of precision "double" gets its view origins
     // relative to the camera (gpu_uniforms.h).

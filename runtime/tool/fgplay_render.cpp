@@ -47,6 +47,7 @@ int render(const RenderOptions& o) {
         frame.knobs = o.knobs;
         frame.lens_mask = o.lens_mask;
         frame.foveation = o.foveation;
+        frame.tile_dispatch = !o.whole_dispatch;
         const SceneSettings& scene = pack->manifest.scene;
         StereoSettings stereo;
         stereo.ipd_m = o.ipd_m;

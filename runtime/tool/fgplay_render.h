@@ -40,6 +40,7 @@ struct RenderOptions {
     std::map<std::string, double> knobs;
     bool lens_mask = false;
     double foveation = -1.0;   // < 0: as the scene says
+    bool whole_dispatch = false;   // no tile lists: what the tiles save
 };
 
 int render(const RenderOptions& o);

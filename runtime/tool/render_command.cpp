@@ -41,6 +41,8 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
     render->add_option("--device", r.device, "Vulkan device: index or name substring");
     render->add_flag("--lens-mask", r.lens_mask, "skip the pixels a headset's lens hides (an inscribed ellipse)");
+    render->add_flag("--whole-dispatch", r.whole_dispatch,
+                     "dispatch each pass over its whole image, not the tiles that hold its pixels (to measure what the tiles save)");
     render->add_option("--foveation", r.foveation,
                        "fixed foveation: fovea radius in half image heights (0 off; default: the scene's)")
         ->check(CLI::Range(0.0, 4.0));

@@ -1,9 +1,11 @@
-// A foveated eye's passes dispatch only the 8x8 tiles that hold their pixels (dispatch_tiles.h,
-// shaders/dispatch_tiles.glsl): the fovea's passes and its conemarch level 1 the tiles short of the
-// periphery, the periphery's the tiles beyond, the fovea pass the tiles it fills. A CPU rasteriser
-// runs a whole shader for a SIMD group whose lanes have nothing to do. A list must hold every pixel
-// the shader takes, and frames must be bit-identical to dispatches over the whole image, also for
-// a headset's off-centre lenses, where the lists follow the lens centre.
+// An eye's passes dispatch only the 8x8 tiles that hold their pixels (dispatch_tiles.h,
+// shaders/dispatch_tiles.glsl): foveated, the fovea's passes and its conemarch level 1 the tiles
+// short of the periphery, the periphery's the tiles beyond, the fovea pass the tiles it fills; and
+// once the images hold the miss of the pixels the lens hides, no pass dispatches the tiles wholly
+// outside it. A CPU rasteriser runs a whole shader for a SIMD group whose lanes have nothing to do.
+// A list must hold every pixel the shader takes, and frames must be bit-identical to dispatches
+// over the whole image, also for a headset's off-centre lenses, where the lists follow the lens
+// centre, and over many frames while the lens moves.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,7 +34,7 @@ FrameSettings foveated(StereoMode stereo, bool tiles) {
     fs.stereo = stereo;
     fs.lens_mask = true;
     fs.foveation = 0.4;
-    fs.foveated_tiles = tiles;
+    fs.tile_dispatch = tiles;
     fs.count_evaluations = true;
     return fs;
 }
@@ -83,7 +85,71 @@ GpuFrame frame_with(std::uint32_t w, std::uint32_t h, glm::vec2 lens_centre, flo
     return f;
 }
 
+// fg_outside_lens in common.glsl, in float as the shader computes it: a pixel's centre, or a coarse
+// cell's block centre against radii grown by the block.
+bool outside_lens(const GpuFrame& f, int view, glm::vec2 centre_px, float block) {
+    const GpuView& v = f.views[view];
+    if (v.lens_radii.x <= 0.0f) return false;
+    glm::vec2 size(f.eye_size);
+    glm::vec2 margin = block > 1.0f ? glm::vec2(block) / size : glm::vec2(0.0f);
+    glm::vec2 q = (centre_px / size - v.lens_centre) / (v.lens_radii + margin);
+    return glm::dot(q, q) > 1.0f;
+}
+
+bool listed_in(const std::vector<std::uint32_t>& tiles, glm::ivec2 cell) {
+    return std::count(tiles.begin(), tiles.end(), std::uint32_t(cell.x / 8) | std::uint32_t(cell.y / 8) << 16) == 1;
+}
+
 }  // namespace
+
+TEST(DispatchTiles, every_pixel_a_pass_takes_inside_the_lens_lies_in_a_listed_tile_and_those_outside_are_left_out) {
+    // A headset's lens ellipse towards the nose and one at the image's edge, an unfoveated eye (the
+    // whole image) and foveated ones, odd sizes.
+    struct Case {
+        std::uint32_t w, h;
+        glm::vec2 centre, radii;
+        float fovea;
+    };
+    for (const Case& c : {Case{160, 120, {0.5f, 0.5f}, {0.5f, 0.5f}, 0.0f}, Case{257, 131, {0.57f, 0.46f}, {0.55f, 0.5f}, 0.5f},
+                          Case{96, 96, {0.02f, 0.97f}, {0.5f, 0.4f}, 0.3f}, Case{512, 512, {0.53f, 0.5f}, {0.5f, 0.5f}, 0.0f}}) {
+        SCOPED_TRACE(::testing::Message() << c.w << "x" << c.h << " centre " << c.centre.x << "," << c.centre.y
+                                          << " fovea " << c.fovea);
+        GpuFrame f = frame_with(c.w, c.h, c.centre, c.fovea, 0.15f);
+        for (auto& v : f.views) v.lens_radii = c.radii;
+        auto inside = [&](TileRegion region) { return list_dispatch_tiles(f, 0, region, OutsideLens::Left); };
+        const auto whole = inside(TileRegion::Whole), fovea = inside(TileRegion::Fovea), level1 = inside(TileRegion::FoveaLevel1),
+                   outer = inside(TileRegion::Periphery), fill = inside(TileRegion::Fill);
+        std::size_t missing = 0, shown = 0;
+        for (int y = 0; y < int(c.h); ++y)
+            for (int x = 0; x < int(c.w); ++x) {
+                glm::ivec2 p(x, y);
+                glm::vec2 centre = glm::vec2(p) + 0.5f;
+                if (!outside_lens(f, 0, centre, 1.0f)) {
+                    ++shown;
+                    if (c.fovea == 0.0f) missing += !listed_in(whole, p);
+                    float s = periphery(f, 0, p);
+                    if (c.fovea > 0.0f && s < 1.0f) missing += !listed_in(fovea, p);
+                    if (c.fovea > 0.0f && s >= 1.0f && x % 2 == 0 && y % 2 == 0) missing += !listed_in(outer, p / 2);
+                    if (c.fovea > 0.0f && s > 0.0f && (x & y & 1)) missing += !listed_in(fill, p);
+                }
+                // A level-1 cell marches unless its block is outside the lens grown by the block.
+                if (c.fovea > 0.0f && x % 2 == 0 && y % 2 == 0 && periphery(f, 0, p) < 1.0f &&
+                    !outside_lens(f, 0, glm::vec2(p) + 1.0f, 2.0f))
+                    missing += !listed_in(level1, p / 2);
+            }
+        EXPECT_EQ(missing, 0u);
+        ASSERT_GT(shown, 0u);
+        // What the lens leaves out: the tiles wholly outside the ellipse (an inscribed one hides 21 %
+        // of the pixels; tiles across its edge stay).
+        if (c.fovea == 0.0f) {
+            const double all = double(dispatch_tile_capacity(c.w, c.h, TileRegion::Whole));
+            EXPECT_EQ(list_dispatch_tiles(f, 0, TileRegion::Whole).size(), all);
+            std::printf("%ux%u: %zu of %.0f tiles inside the lens\n", c.w, c.h, whole.size(), all);
+            EXPECT_LT(whole.size(), (c.w >= 512 ? 0.84 : 0.93) * all);
+            EXPECT_GT(whole.size(), double(shown) / 64.0);
+        }
+    }
+}
 
 TEST(DispatchTiles, every_pixel_a_pass_takes_lies_in_a_listed_tile_and_few_others_are_listed) {
     // A centred fovea, a headset's lens towards the nose, one at the image's edge, a fovea wider
@@ -169,6 +235,80 @@ TEST_F(FoveatedTiles, a_foveated_eyes_passes_dispatch_their_tiles_and_nothing_el
     for (auto& pass : pack.manifest.passes) std::erase(pass.dispatch_constants, kSpecTileList.id);
     FrameGraph old = FrameGraph::build(pack.manifest, foveated(StereoMode::PerEye, true), kWidth, kHeight);
     for (const FramePass& p : old.passes()) EXPECT_TRUE(p.tile_list.empty()) << p.label;
+}
+
+// Frames of one executor, the head moving, each frame through its own lens ellipse (a headset's
+// visibility mask can change, and the lists must follow it): the final image and depth of each.
+std::vector<Frame> render_sequence(const Pack& pack, const FrameSettings& fs, const std::vector<glm::vec4>& lenses) {
+    StereoSettings stereo;
+    stereo.width = fs.width;
+    stereo.height = fs.height;
+    Fov left{-1.05, 0.8, -0.95, 0.7}, right{-0.8, 1.05, -0.95, 0.7};
+    StereoViews first = make_stereo_views(look_at({0.0, 0.55, 1.55}, {0.0, 0.0, 0.0}), left, right, stereo);
+    FrameExecutor executor(test::shared_context(), pack,
+                           FrameGraph::build(pack.manifest, fs, first.centre.width, first.centre.height));
+    std::vector<Frame> frames;
+    for (std::size_t i = 0; i < lenses.size(); ++i) {
+        double a = 0.02 * double(i);
+        StereoViews views = make_stereo_views(look_at({std::sin(a) * 1.55, 0.55, std::cos(a) * 1.55}, {0.0, 0.0, 0.0}),
+                                              left, right, stereo);
+        GpuFrame gpu = make_gpu_frame(views, executor.graph().settings, 0.0, 1.0, static_cast<std::uint32_t>(i));
+        for (auto& v : gpu.views) {
+            v.lens_centre = {lenses[i].x, lenses[i].y};
+            v.lens_radii = {lenses[i].z, lenses[i].w};
+        }
+        executor.set_frame(gpu);
+        Frame f;
+        f.evaluations_per_pixel = executor.run().evaluations_per_pixel;
+        f.left = executor.download("final.left");
+        f.right = executor.download("final.right");
+        f.depth_left = executor.download("depth.left");
+        f.depth_right = executor.download("depth.right");
+        frames.push_back(std::move(f));
+    }
+    return frames;
+}
+
+TEST_F(FoveatedTiles, frames_through_a_lens_leave_out_its_hidden_tiles_and_stay_bit_identical_while_it_moves) {
+    // Four frames through one lens (the lists leave its outside out from the second, or the third
+    // with history images), then a narrower lens off centre, the mask off, and the first lens again:
+    // every pixel a list left out must still hold what a dispatch over the whole image writes.
+    std::vector<glm::vec4> lenses(4, glm::vec4(0.5f, 0.5f, 0.5f, 0.5f));
+    for (glm::vec4 l : {glm::vec4(0.56f, 0.47f, 0.42f, 0.4f), glm::vec4(0.56f, 0.47f, 0.42f, 0.4f), glm::vec4(0.56f, 0.47f, 0.42f, 0.4f),
+                        glm::vec4(0.5f, 0.5f, 0.0f, 0.0f), glm::vec4(0.5f, 0.5f, 0.0f, 0.0f), glm::vec4(0.5f, 0.5f, 0.5f, 0.5f),
+                        glm::vec4(0.5f, 0.5f, 0.5f, 0.5f), glm::vec4(0.5f, 0.5f, 0.5f, 0.5f)})
+        lenses.push_back(l);
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    struct Case {
+        const char* name;
+        StereoMode stereo;
+        double foveation;
+        double shade_history;
+    };
+    for (const Case& c : {Case{"per-eye", StereoMode::PerEye, 0.0, 0.0}, Case{"naive", StereoMode::Naive, 0.0, 0.0},
+                          Case{"reproject", StereoMode::Reproject, 0.0, 0.0},
+                          Case{"per-eye, foveated", StereoMode::PerEye, 0.4, 0.0},
+                          Case{"per-eye, shading history", StereoMode::PerEye, 0.0, 0.5}}) {
+        SCOPED_TRACE(c.name);
+        FrameSettings fs = foveated(c.stereo, true);
+        fs.width = 96;
+        fs.height = 80;
+        fs.foveation = c.foveation;
+        if (c.shade_history > 0.0) fs.knobs["shade_history"] = c.shade_history;
+        FrameGraph g = FrameGraph::build(pack.manifest, fs, fs.width, fs.height);
+        if (c.foveation == 0.0) EXPECT_EQ(pass_named(g, "shade.left").tile_list, "tiles.left.whole");
+        if (c.stereo == StereoMode::Reproject) EXPECT_TRUE(pass_named(g, "conemarch.centre.L0").tile_list.empty());
+        FrameSettings whole_fs = fs;
+        whole_fs.tile_dispatch = false;
+        std::vector<Frame> tiled = render_sequence(pack, fs, lenses), whole = render_sequence(pack, whole_fs, lenses);
+        for (std::size_t i = 0; i < lenses.size(); ++i) {
+            SCOPED_TRACE(::testing::Message() << "frame " << i);
+            EXPECT_TRUE(tiled[i].left == whole[i].left);
+            EXPECT_TRUE(tiled[i].right == whole[i].right);
+            EXPECT_TRUE(tiled[i].depth_left == whole[i].depth_left);
+            EXPECT_TRUE(tiled[i].depth_right == whole[i].depth_right);
+        }
+    }
 }
 
 TEST_F(FoveatedTiles, frames_are_bit_identical_to_dispatches_over_the_whole_image) {
