@@ -35,9 +35,15 @@ const char* tile_region_name(TileRegion region) {
     return "?";
 }
 
+std::array<std::uint32_t, 3> tile_dispatch_groups(std::size_t tiles) {
+    if (tiles <= kTileRow) return {static_cast<std::uint32_t>(tiles), 1, 1};
+    return {kTileRow, static_cast<std::uint32_t>((tiles + kTileRow - 1) / kTileRow), 1};
+}
+
 std::uint32_t dispatch_tile_capacity(std::uint32_t width, std::uint32_t height, TileRegion region) {
     Grid g = region_grid(width, height, region);
-    return ((g.width + 7) / 8) * ((g.height + 7) / 8);
+    auto groups = tile_dispatch_groups(std::size_t((g.width + 7) / 8) * ((g.height + 7) / 8));
+    return groups[0] * groups[1];
 }
 
 std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region, OutsideLens outside) {
@@ -87,6 +93,8 @@ std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, 
             }
             if (takes) tiles.push_back(tx | ty << 16);
         }
+    auto groups = tile_dispatch_groups(tiles.size());
+    tiles.resize(std::size_t(groups[0]) * groups[1], kNoTile);
     return tiles;
 }
 

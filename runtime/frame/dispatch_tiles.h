@@ -4,6 +4,7 @@
 // shader for a SIMD group whose lanes all return at once, so the fovea's passes would otherwise pay
 // for the periphery's pixels, the periphery's for the fovea's, and every pass for the pixels the
 // lens hides (an eighth of an eye's cost in a lens-masked frame).
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,15 @@ enum class OutsideLens { Listed, Left };
 
 const char* tile_region_name(TileRegion region);
 
+// A list is dispatched as rows of at most kTileRow workgroups (the least maxComputeWorkGroupCount
+// Vulkan allows; an 8K eye has 524,288 tiles), its last row padded with kNoTile, which the shaders'
+// bounds checks skip.
+inline constexpr std::uint32_t kTileRow = 65535;
+inline constexpr std::uint32_t kNoTile = 0xffffffffu;
+
+// The workgroups that dispatch a list of this many tiles.
+std::array<std::uint32_t, 3> tile_dispatch_groups(std::size_t tiles);
+
 // The tiles, each packed as x | y << 16 in units of 8 cells of the region's grid, in rows. A tile
 // is listed when one of its pixels may be taken (a pixel's margin against float rounding): a
 // superset of what the shader decides per pixel (fg_dispatch_takes, and with OutsideLens::Left
@@ -34,7 +44,7 @@ const char* tile_region_name(TileRegion region);
 std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region,
                                                OutsideLens outside = OutsideLens::Listed);
 
-// How many tiles the region's grid has at most (the buffer that holds the list).
+// How many entries a list of the region's grid has at most, padding included (the buffer that holds it).
 std::uint32_t dispatch_tile_capacity(std::uint32_t width, std::uint32_t height, TileRegion region);
 
 }  // namespace fg

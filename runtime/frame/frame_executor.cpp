@@ -400,8 +400,10 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
             if (timer) timer->begin(cmd, timed);
             if (!pass.tile_list.empty()) {
                 const auto& tiles = tile_lists_[pass.tile_list].tiles;
-                if (!tiles.empty())
-                    prog.pipeline->dispatch(cmd, set, {static_cast<std::uint32_t>(tiles.size()), 1, 1}, pass.push);
+                if (!tiles.empty()) {
+                    auto g = tile_dispatch_groups(tiles.size());
+                    prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
+                }
             } else if (pass.indirect.empty()) {
                 auto g = group_count(pass, *prog.manifest);
                 prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);

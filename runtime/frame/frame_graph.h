@@ -119,13 +119,13 @@ public:
     void keep_for_next_frame(const std::string& image);
     // A full-resolution pass of an eye, made by `make(stride)`: with foveation it runs as two
     // dispatches, all pixels short of the periphery (stride 1) and every other pixel beyond (stride 2).
-    // An eye's dispatches take tiles, so that they can leave out those the lens hides.
+    // A headset's eye dispatches tiles, so that it can leave out those its lens hides.
     template <class Make>
     void add_pixel_pass(int view, Make make) {
         FramePass full = make(1);
         full.invocations = {width, height, 1};
         if (!foveated(view)) {
-            if (view != FG_VIEW_CENTRE) dispatch_tiles(full, view, TileRegion::Whole);
+            if (view != FG_VIEW_CENTRE && !is_panorama()) dispatch_tiles(full, view, TileRegion::Whole);
             add_pass(std::move(full));
             return;
         }

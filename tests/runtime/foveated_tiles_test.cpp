@@ -329,3 +329,55 @@ TEST_F(FoveatedTiles, frames_are_bit_identical_to_dispatches_over_the_whole_imag
         }
     }
 }
+
+TEST(DispatchTiles, a_list_longer_than_a_dispatch_row_goes_in_padded_rows) {
+    // An 8K eye has 524,288 tiles; Vulkan promises only 65,535 workgroups along x.
+    GpuFrame f = frame_with(8192, 4096, {0.5f, 0.5f}, 0.0f, 0.15f);
+    std::vector<std::uint32_t> tiles = list_dispatch_tiles(f, 0, TileRegion::Whole);
+    auto groups = tile_dispatch_groups(tiles.size());
+    EXPECT_EQ(groups[0], kTileRow);
+    EXPECT_EQ(groups[1], 9u);
+    EXPECT_EQ(tiles.size(), std::size_t(groups[0]) * groups[1]);
+    EXPECT_LE(tiles.size(), dispatch_tile_capacity(8192, 4096, TileRegion::Whole));
+    EXPECT_EQ(std::count(tiles.begin(), tiles.end(), kNoTile), std::ptrdiff_t(tiles.size()) - 524288);
+    EXPECT_EQ(tiles[524287], 1023u | 511u << 16);
+    // A short list is one row, unpadded.
+    EXPECT_EQ(tile_dispatch_groups(4096), (std::array<std::uint32_t, 3>{4096, 1, 1}));
+    EXPECT_EQ(tile_dispatch_groups(0)[0], 0u);
+}
+
+TEST_F(FoveatedTiles, an_eye_of_more_tiles_than_a_dispatch_row_renders_every_row) {
+    // 2048x2056 per eye: 65,792 tiles, two rows of workgroups. Looking away from the bulb, so every
+    // ray leaves the bounds at once and the frame stays cheap; the lens leaves a fifth out.
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    FrameSettings fs;
+    fs.width = 2048;
+    fs.height = 2056;
+    fs.lens_mask = true;
+    FrameGraph g = FrameGraph::build(pack.manifest, fs, fs.width, fs.height);
+    ASSERT_EQ(pass_named(g, "shade.left").tile_list, "tiles.left.whole");
+    StereoSettings stereo;
+    stereo.width = fs.width;
+    stereo.height = fs.height;
+    const Fov fov{-1.0, 1.0, -1.0, 1.0};
+    StereoViews views = make_stereo_views(look_at({0.0, 0.0, 3.0}, {0.0, 0.0, 6.0}), fov, fov, stereo);
+    auto render_twice = [&](bool tiles) {
+        FrameSettings s = fs;
+        s.tile_dispatch = tiles;
+        FrameExecutor executor(test::shared_context(), pack, FrameGraph::build(pack.manifest, s, views.centre.width, views.centre.height));
+        GpuFrame gpu = make_gpu_frame(views, executor.graph().settings, 0.0, 1.0, 0);
+        // Without the lens in the second frame, every tile of both rows is dispatched again.
+        executor.set_frame(gpu);
+        executor.run();
+        std::vector<std::byte> lens = executor.download("final.left");
+        for (auto& v : gpu.views) v.lens_radii = {0.0f, 0.0f};
+        executor.set_frame(gpu);
+        executor.run();
+        return std::pair{lens, executor.download("final.left")};
+    };
+    auto tiled = render_twice(true), whole = render_twice(false);
+    EXPECT_TRUE(tiled.first == whole.first);
+    EXPECT_TRUE(tiled.second == whole.second);
+    // The last pixel lies in the second row's tiles: the background, not the cleared image's zeros.
+    EXPECT_NE(std::to_integer<int>(tiled.second[tiled.second.size() - 1]), 0);
+}

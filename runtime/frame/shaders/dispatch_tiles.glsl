@@ -4,7 +4,8 @@
 // SIMD group whose lanes all return at once, so a dispatch over the whole image would pay for the
 // periphery's pixels in the fovea's passes and for the fovea's in the periphery's.
 
-// Tiles as x | y << 16, in units of 8 cells of the pass's grid (bound either way).
+// Tiles as x | y << 16, in units of 8 cells of the pass's grid, in rows of workgroups (bound either
+// way). Padding (0xffffffff) maps past every image.
 layout(set = 0, binding = 16, std430) readonly buffer FgTiles { uint fg_tiles[]; };
 
 // The cell of its grid an invocation stands for, from its cell of the dispatch grid (8x8
@@ -12,7 +13,7 @@ layout(set = 0, binding = 16, std430) readonly buffer FgTiles { uint fg_tiles[];
 ivec2 fg_dispatch_cell(int stride, ivec2 cell)
 {
     if (FG_SPEC_TILE_LIST != 1) return cell * stride;
-    uint tile = fg_tiles[gl_WorkGroupID.x];
+    uint tile = fg_tiles[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x];
     ivec2 in_tile = cell - ivec2(gl_WorkGroupID.xy) * 8;
     return (ivec2(tile & 0xffffu, tile >> 16u) * 8 + in_tile) * stride;
 }
