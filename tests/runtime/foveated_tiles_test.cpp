@@ -46,15 +46,15 @@ struct Frame {
 
 // Both eyes through lenses whose centres sit off the image centre, as a headset's do (the
 // left lens's towards the nose: the image's right).
-Frame render(const Pack& pack, const FrameSettings& fs) {
+StereoViews headset_views(const HeadPose& head, const FrameSettings& fs) {
     StereoSettings stereo;
     stereo.width = fs.width;
     stereo.height = fs.height;
-    Fov left{-1.05, 0.8, -0.95, 0.7}, right{-0.8, 1.05, -0.95, 0.7};
-    StereoViews views = make_stereo_views(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}), left, right, stereo);
-    FrameExecutor executor(test::shared_context(), pack,
-                           FrameGraph::build(pack.manifest, fs, views.centre.width, views.centre.height));
-    executor.set_frame(make_gpu_frame(views, executor.graph().settings, 0.0, 1.0, 0));
+    return make_stereo_views(head, Fov{-1.05, 0.8, -0.95, 0.7}, Fov{-0.8, 1.05, -0.95, 0.7}, stereo);
+}
+
+Frame run_frame(FrameExecutor& executor, const GpuFrame& gpu) {
+    executor.set_frame(gpu);
     Frame f;
     f.evaluations_per_pixel = executor.run().evaluations_per_pixel;
     f.left = executor.download("final.left");
@@ -62,6 +62,13 @@ Frame render(const Pack& pack, const FrameSettings& fs) {
     f.depth_left = executor.download("depth.left");
     f.depth_right = executor.download("depth.right");
     return f;
+}
+
+Frame render(const Pack& pack, const FrameSettings& fs) {
+    StereoViews views = headset_views(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}), fs);
+    FrameExecutor executor(test::shared_context(), pack,
+                           FrameGraph::build(pack.manifest, fs, views.centre.width, views.centre.height));
+    return run_frame(executor, make_gpu_frame(views, executor.graph().settings, 0.0, 1.0, 0));
 }
 
 // fg_periphery in common.glsl, in float as the shader computes it.
@@ -240,31 +247,19 @@ TEST_F(FoveatedTiles, a_foveated_eyes_passes_dispatch_their_tiles_and_nothing_el
 // Frames of one executor, the head moving, each frame through its own lens ellipse (a headset's
 // visibility mask can change, and the lists must follow it): the final image and depth of each.
 std::vector<Frame> render_sequence(const Pack& pack, const FrameSettings& fs, const std::vector<glm::vec4>& lenses) {
-    StereoSettings stereo;
-    stereo.width = fs.width;
-    stereo.height = fs.height;
-    Fov left{-1.05, 0.8, -0.95, 0.7}, right{-0.8, 1.05, -0.95, 0.7};
-    StereoViews first = make_stereo_views(look_at({0.0, 0.55, 1.55}, {0.0, 0.0, 0.0}), left, right, stereo);
+    StereoViews first = headset_views(look_at({0.0, 0.55, 1.55}, {0.0, 0.0, 0.0}), fs);
     FrameExecutor executor(test::shared_context(), pack,
                            FrameGraph::build(pack.manifest, fs, first.centre.width, first.centre.height));
     std::vector<Frame> frames;
     for (std::size_t i = 0; i < lenses.size(); ++i) {
         double a = 0.02 * double(i);
-        StereoViews views = make_stereo_views(look_at({std::sin(a) * 1.55, 0.55, std::cos(a) * 1.55}, {0.0, 0.0, 0.0}),
-                                              left, right, stereo);
+        StereoViews views = headset_views(look_at({std::sin(a) * 1.55, 0.55, std::cos(a) * 1.55}, {0.0, 0.0, 0.0}), fs);
         GpuFrame gpu = make_gpu_frame(views, executor.graph().settings, 0.0, 1.0, static_cast<std::uint32_t>(i));
         for (auto& v : gpu.views) {
             v.lens_centre = {lenses[i].x, lenses[i].y};
             v.lens_radii = {lenses[i].z, lenses[i].w};
         }
-        executor.set_frame(gpu);
-        Frame f;
-        f.evaluations_per_pixel = executor.run().evaluations_per_pixel;
-        f.left = executor.download("final.left");
-        f.right = executor.download("final.right");
-        f.depth_left = executor.download("depth.left");
-        f.depth_right = executor.download("depth.right");
-        frames.push_back(std::move(f));
+        frames.push_back(run_frame(executor, gpu));
     }
     return frames;
 }
