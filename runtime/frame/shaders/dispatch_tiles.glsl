@@ -1,8 +1,9 @@
-// A foveated eye's pass dispatches only the 8x8 tiles of its grid that hold pixels it takes
+// An eye's pass dispatches only the 8x8 tiles of its grid that hold pixels it takes
 // (FG_SPEC_TILE_LIST): the runtime lists them (dispatch_tiles.cpp), one workgroup per tile, and the
-// shader still decides each pixel (fg_dispatch_takes). llvmpipe runs every line of a shader for a
-// SIMD group whose lanes all return at once, so a dispatch over the whole image would pay for the
-// periphery's pixels in the fovea's passes and for the fovea's in the periphery's.
+// shader still decides each pixel (fg_dispatch_takes, fg_outside_lens). llvmpipe runs every line of
+// a shader for a SIMD group whose lanes all return at once, so a dispatch over the whole image would
+// pay for the periphery's pixels in the fovea's passes, for the fovea's in the periphery's, and for
+// the pixels the lens hides.
 
 // Tiles as x | y << 16, in units of 8 cells of the pass's grid, in rows of workgroups (bound either
 // way). Padding (0xffffffff) maps past every image.
