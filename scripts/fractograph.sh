@@ -48,7 +48,8 @@ build() {
   studio_packages
   if [ ! -f "$BUILD/build.ninja" ]; then
     say "configuring $BUILD"
-    cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+    # -g1: line tables name file and line in backtraces and profiles; full -g costs a fifth more build time.
+    cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
   fi
   say "building (log: $BUILD/build.log)"
   run_logged "$BUILD/build.log" cmake --build "$BUILD" -j "$JOBS"
