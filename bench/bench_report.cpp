@@ -129,8 +129,7 @@ void BenchReport::write(const std::string& folder) const {
     // The Pareto front over all views, cheapest first: what `fgplay xr --trade-offs` walks.
     j["trade_offs"] = nlohmann::json::array();
     try {
-        for (const auto& t : trade_offs_from_bench_json(j))
-            j["trade_offs"].push_back({{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", t.wrong_pct}});
+        j["trade_offs"] = trade_off_front_json(j);
     } catch (const TradeOffError& e) {
         fmt::print("note: no trade-off front: {}\n", e.what());
     }

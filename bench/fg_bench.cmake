@@ -20,6 +20,7 @@ add_library(fg_bench STATIC
   ${PROJECT_SOURCE_DIR}/bench/head_trace.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_settings.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_report.cpp
+  ${PROJECT_SOURCE_DIR}/bench/sequence_trade_offs.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_runner.cpp
   ${FG_EMBEDDED_BENCH_SCRIPTS}
   ${FG_EMBEDDED_SEQUENCE_SCENES})

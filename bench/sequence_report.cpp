@@ -13,6 +13,7 @@
 #include "frame_measures.h"
 #include "head_trace.h"
 #include "plot_script.h"
+#include "sequence_trade_offs.h"
 
 namespace fg::bench {
 
@@ -161,6 +162,14 @@ void SequenceReport::write(const std::string& folder) const {
                 f.evaluations_per_pixel >= 0.0 ? fmt::format("{:.3f}", f.evaluations_per_pixel) : "",
                 f.misclassified_pct, f.overstepped_pct, f.psnr);
 
+    // Per scene, what the frame governor walks: `fgplay xr --trade-offs trade_offs_<scene>.json`.
+    std::vector<std::pair<std::string, nlohmann::json>> fronts;
+    for (const auto& r : rows)
+        if (std::none_of(fronts.begin(), fronts.end(), [&](const auto& f) { return f.first == r.scene; }))
+            fronts.emplace_back(r.scene, sequence_trade_offs_json(*this, r.scene));
+    for (const auto& [scene, j] : fronts)
+        std::ofstream(fs::path(folder) / fmt::format("trade_offs_{}.json", scene)) << j.dump(1);
+
     std::ofstream md(fs::path(folder) / "sequence.md");
     md << fmt::format(
         "# Head traces at {:g} Hz\n\nDevice: {}. {}x{} per eye, stereo pairs, {} frames per trace. GPU time "
@@ -210,6 +219,18 @@ void SequenceReport::write(const std::string& folder) const {
             masked ? ratio_cell(masked->speedup_median_naive) : "", masked ? ratio_cell(masked->speedup_p99_naive) : "",
             over(naive, masked, &SequenceRow::median_ms), over(naive, masked, &SequenceRow::p99_ms));
     }
+    md << "\n## The frame governor's ladder\n\nThe Pareto front of each scene's settings over its traces (median "
+          "GPU time per frame summed over the traces, misclassified pixels averaged), most accurate first: what "
+          "`fgplay xr --trade-offs trade_offs_<scene>.json` walks.\n";
+    for (const auto& [scene, j] : fronts) {
+        md << fmt::format("\n- {}:", scene);
+        if (j["trade_offs"].empty()) md << " none (" << j.value("front_error", std::string()) << ")";
+        for (auto it = j["trade_offs"].rbegin(); it != j["trade_offs"].rend(); ++it)
+            md << fmt::format(" {}{} ({:.1f} ms, {:.3f} %)", it == j["trade_offs"].rbegin() ? "" : "→ ",
+                              (*it)["setting"].get<std::string>(), (*it)["time_ms"].get<double>(),
+                              (*it)["wrong_pct"].get<double>());
+    }
+    md << "\n";
     std::string scene_now;
     for (const auto& [scene, trace] : scene_traces) {
         if (scene != scene_now) md << "\n## " << (scene_now = scene) << "\n";

@@ -129,6 +129,13 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
     return pareto_front(std::move(measured));
 }
 
+nlohmann::json trade_off_front_json(const nlohmann::json& results) {
+    auto front = nlohmann::json::array();
+    for (const auto& t : trade_offs_from_bench_json(results))
+        front.push_back({{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", t.wrong_pct}});
+    return front;
+}
+
 std::vector<TradeOff> read_trade_offs(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw TradeOffError(path, "cannot be read");

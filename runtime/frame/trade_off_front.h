@@ -39,6 +39,8 @@ void read_trade_off_settings(const nlohmann::json& j, const std::string& pointer
 // The front of a results.json from `fgplay bench`: only settings measured without error in every
 // view count. Throws TradeOffError naming the file's bad entry.
 std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results);
+// The same front as results.json's "trade_offs": setting, time_ms, wrong_pct, cheapest first.
+nlohmann::json trade_off_front_json(const nlohmann::json& results);
 std::vector<TradeOff> read_trade_offs(const std::string& path);
 
 }  // namespace fg

@@ -1,6 +1,7 @@
 # `fgplay bench --sequence --quick` as CI runs it: a row for every trace and setting with finite
-# figures, the tables and plots beside them, and per-eye conemarch no more than 0.5 percentage
-# points of misclassified pixels worse than naive sphere tracing on the same trace.
+# figures, the tables and plots beside them, the governor's trade-offs, and per-eye conemarch no
+# more than 0.5 percentage points of misclassified pixels worse than naive sphere tracing on the
+# same trace.
 include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 cmake_policy(SET CMP0007 NEW)   # empty CSV cells (lanes not counted yet) keep their place in a list
 file(REMOVE_RECURSE ${WORK})
@@ -13,7 +14,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fgplay bench --sequence --quick failed: ${out}${err}")
 endif()
 set(traces look_around walk fast_turn flight snap_turn)
-set(files sequence.csv sequence_frames.csv sequence.md sequence_speedups.png)
+set(files sequence.csv sequence_frames.csv sequence.md sequence_speedups.png trade_offs_mandelbulb.json)
 foreach(trace ${traces})
   list(APPEND files sequence_frame_time_${trace}.png)
 endforeach()
@@ -103,8 +104,16 @@ foreach(trace ${traces})
   endforeach()
 endforeach()
 
+# The frame governor's ladder measured on the traces (`fgplay xr --trade-offs`): a front, and the rows behind it.
+file(READ ${WORK}/seq/trade_offs_mandelbulb.json offs)
+string(JSON front_length ERROR_VARIABLE json_error LENGTH "${offs}" trade_offs)
+string(JSON row_count ERROR_VARIABLE rows_error LENGTH "${offs}" rows)
+if(json_error OR rows_error OR NOT front_length GREATER 0 OR NOT row_count EQUAL expected)
+  message(FATAL_ERROR "trade_offs_mandelbulb.json has no front or not ${expected} rows (${json_error}${rows_error}):\n${offs}")
+endif()
+
 file(READ ${WORK}/seq/sequence.md table)
-if(NOT table MATCHES "Per-eye conemarch against naive")
+if(NOT table MATCHES "Per-eye conemarch against naive" OR NOT table MATCHES "The frame governor's ladder")
   message(FATAL_ERROR "sequence.md has no headline table:\n${table}")
 endif()
 fg_test_passed()

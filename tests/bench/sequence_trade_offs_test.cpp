@@ -1,0 +1,104 @@
+// The head traces' trade-offs (bench/sequence_trade_offs.h): what `fgplay bench --sequence` writes
+// for the frame governor is read back by the same reader `fgplay xr --trade-offs` uses, with each
+// setting's cost summed over the traces, its knobs kept, and a setting that failed on any trace left
+// out.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "frame/trade_off_front.h"
+#include "sequence_settings.h"
+#include "sequence_trade_offs.h"
+
+namespace fg::bench {
+namespace {
+
+constexpr std::uint32_t kSize = 128;
+
+// A row of `frames` rendered frames, each taking `ms` and misclassifying `wrong` percent.
+SequenceRow row(const std::string& scene, const std::string& trace, const SequenceSetting& setting, double ms,
+                double wrong, int frames = 3) {
+    SequenceRow r;
+    r.scene = scene;
+    r.trace = trace;
+    r.setting = setting;
+    for (int i = 0; i < frames; ++i) {
+        SequenceFrame f;
+        f.index = i;
+        f.gpu_ms = ms;
+        f.misclassified_pct = wrong;
+        r.frames.push_back(f);
+    }
+    r.summarize();
+    return r;
+}
+
+const SequenceSetting& setting(const std::vector<SequenceSetting>& all, const std::string& name) {
+    for (const auto& s : all)
+        if (s.name() == name) return s;
+    throw std::runtime_error("no setting " + name);
+}
+
+TEST(SequenceTradeOffs, the_governor_reads_each_settings_cost_summed_over_the_traces_and_skips_failures) {
+    const auto settings = make_sequence_settings(kSize, false);
+    const std::string masked = std::string("per-eye with ") + kMaskedPixels;
+    SequenceReport report;
+    report.size = kSize;
+    report.device = "test";
+    for (const char* trace : {"look_around", "walk"}) {
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "naive"), 40.0, 0.20));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye"), 30.0, 0.25));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye + persistent lanes"), 20.0, 0.25));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye + reuse"), 35.0, 0.25));   // beaten
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, masked), 10.0, 0.40));
+        // Another scene's rows are not this scene's trade-offs.
+        report.rows.push_back(row("kleinian", trace, setting(settings, "naive"), 1.0, 0.0));
+    }
+    // Cheap and exact, but it failed on one trace: it cannot be trusted on the other.
+    SequenceRow failed = row("mandelbulb", "look_around", setting(settings, "per-eye + shading history"), 5.0, 0.0);
+    failed.error = "device lost";
+    report.rows.push_back(failed);
+    report.rows.push_back(row("mandelbulb", "walk", setting(settings, "per-eye + shading history"), 5.0, 0.0));
+    // All dark on one trace: no time measured, so not on the front either.
+    report.rows.push_back(row("mandelbulb", "look_around", setting(settings, "naive + persistent lanes"), 0.0, 0.0, 0));
+    report.rows.push_back(row("mandelbulb", "walk", setting(settings, "naive + persistent lanes"), 8.0, 0.0));
+
+    const nlohmann::json j = sequence_trade_offs_json(report, "mandelbulb");
+    const auto file = std::filesystem::temp_directory_path() / "fg_sequence_trade_offs_test.json";
+    std::ofstream(file) << j.dump(1);
+    const std::vector<TradeOff> front = read_trade_offs(file.string());
+    std::filesystem::remove(file);
+
+    ASSERT_EQ(front.size(), 3u) << j["trade_offs"].dump();
+    EXPECT_EQ(front[0].setting, masked);
+    EXPECT_DOUBLE_EQ(front[0].time_ms, 20.0);
+    EXPECT_DOUBLE_EQ(front[0].wrong_pct, 0.40);
+    EXPECT_TRUE(front[0].frame.lens_mask);
+    EXPECT_DOUBLE_EQ(front[0].frame.foveation, 0.5);
+    EXPECT_EQ(front[1].setting, "per-eye + persistent lanes");
+    EXPECT_DOUBLE_EQ(front[1].time_ms, 40.0);
+    EXPECT_EQ(front[1].frame.stereo, StereoMode::PerEye);
+    EXPECT_EQ(front[1].frame.knobs.at("persistent_lanes"), 1.0);
+    EXPECT_EQ(front[2].setting, "naive");
+    EXPECT_EQ(front[2].frame.stereo, StereoMode::Naive);
+    EXPECT_DOUBLE_EQ(front[2].render_scale, 1.0);
+    EXPECT_EQ(j["trade_offs"].size(), 3u);
+    EXPECT_EQ(j["rows"].size(), 14u);   // the bulb's only
+}
+
+TEST(SequenceTradeOffs, a_scene_with_no_setting_measured_on_every_trace_says_why_it_has_no_front) {
+    const auto settings = make_sequence_settings(kSize, true);
+    SequenceReport report;
+    report.size = kSize;
+    SequenceRow r = row("mandelbox", "walk", setting(settings, "per-eye"), 10.0, 0.1);
+    r.error = "out of memory";
+    report.rows.push_back(r);
+    const nlohmann::json j = sequence_trade_offs_json(report, "mandelbox");
+    EXPECT_TRUE(j["trade_offs"].empty());
+    EXPECT_NE(j.value("front_error", std::string()).find("no setting was measured without error"), std::string::npos)
+        << j.dump();
+}
+
+}  // namespace
+}  // namespace fg::bench
