@@ -4,10 +4,10 @@
 // out.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
 
 #include "frame/trade_off_front.h"
+#include "scratch_dir.h"
 #include "sequence_settings.h"
 #include "sequence_trade_offs.h"
 
@@ -65,10 +65,9 @@ TEST(SequenceTradeOffs, the_governor_reads_each_settings_cost_summed_over_the_tr
     report.rows.push_back(row("mandelbulb", "walk", setting(settings, "naive + persistent lanes"), 8.0, 0.0));
 
     const nlohmann::json j = sequence_trade_offs_json(report, "mandelbulb");
-    const auto file = std::filesystem::temp_directory_path() / "fg_sequence_trade_offs_test.json";
-    std::ofstream(file) << j.dump(1);
-    const std::vector<TradeOff> front = read_trade_offs(file.string());
-    std::filesystem::remove(file);
+    test::ScratchDir dir{"fg_sequence_trade_offs"};
+    std::ofstream(dir / "trade_offs_mandelbulb.json") << j.dump(1);
+    const std::vector<TradeOff> front = read_trade_offs((dir / "trade_offs_mandelbulb.json").string());
 
     ASSERT_EQ(front.size(), 3u) << j["trade_offs"].dump();
     EXPECT_EQ(front[0].setting, masked);
