@@ -22,6 +22,12 @@ void add_bench_command(CLI::App& app, BenchCommand& c) {
     bench->add_flag("--sequence", b.sequence, "head traces at 90 Hz per scene and setting (--frames per trace, default 90)");
     bench->add_option("--trace", b.traces, "with --sequence: look_around, walk, fast_turn, flight, snap_turn (repeatable)");
     bench->add_option("--scene", b.scenes, "with --sequence: a graph or pack (repeatable; default the gallery's bulb, box, Kleinian)");
+    bench->add_option("--timing", b.timing,
+                      "with --sequence: back-to-back (timed frames first, errors and counts after: a GPU keeps its "
+                      "clock), interleaved (each frame timed and compared in turn), auto (back-to-back unless the "
+                      "device is a CPU)")
+        ->check(CLI::IsMember({"auto", "back-to-back", "interleaved"}))
+        ->capture_default_str();
 }
 
 int BenchCommand::run() {

@@ -23,6 +23,9 @@ struct BenchOptions {
     // `scenes` (graphs or packs; empty: the gallery's bulb, box and Kleinian) and `traces` (empty: all).
     bool sequence = false;
     std::vector<std::string> scenes, traces;
+    // How a trace's frames are timed: "back-to-back" (then errors and counts on a second pass),
+    // "interleaved" (each frame timed, read back and compared in turn) or "auto" (back to back on a GPU).
+    std::string timing = "auto";
 };
 
 int run_bench(const BenchOptions& options);

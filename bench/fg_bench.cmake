@@ -22,8 +22,9 @@ add_library(fg_bench STATIC
   ${PROJECT_SOURCE_DIR}/bench/sequence_report.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_trade_offs.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_runner.cpp
+  ${PROJECT_SOURCE_DIR}/bench/gpu_clock.cpp
   ${FG_EMBEDDED_BENCH_SCRIPTS}
   ${FG_EMBEDDED_SEQUENCE_SCENES})
 target_include_directories(fg_bench PUBLIC ${PROJECT_SOURCE_DIR}/bench)
-target_link_libraries(fg_bench PUBLIC fg_runtime fg_locomotion CLI11::CLI11)
+target_link_libraries(fg_bench PUBLIC fg_runtime fg_locomotion CLI11::CLI11 ${CMAKE_DL_LIBS})
 target_compile_options(fg_bench PRIVATE ${FG_WARNINGS})

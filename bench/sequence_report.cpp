@@ -153,14 +153,16 @@ void SequenceReport::write(const std::string& folder) const {
     }
 
     std::ofstream frames_csv(fs::path(folder) / "sequence_frames.csv");
-    frames_csv << "scene,trace,setting,frame,dark,frame_ms,evals_per_px,misclassified_pct,overstepped_pct,psnr_db\n";
+    frames_csv << "scene,trace,setting,frame,dark,frame_ms,evals_per_px,misclassified_pct,overstepped_pct,psnr_db,"
+                  "sm_clock_mhz\n";
     for (const auto& r : rows)
         for (const auto& f : r.frames)
             frames_csv << fmt::format(
-                "{},{},{},{},{},{:.3f},{},{:.4f},{:.4f},{:.2f}\n", r.scene, r.trace, r.setting.name(), f.index,
+                "{},{},{},{},{},{:.3f},{},{:.4f},{:.4f},{:.2f},{}\n", r.scene, r.trace, r.setting.name(), f.index,
                 f.dark ? 1 : 0, f.gpu_ms,
                 f.evaluations_per_pixel >= 0.0 ? fmt::format("{:.3f}", f.evaluations_per_pixel) : "",
-                f.misclassified_pct, f.overstepped_pct, f.psnr);
+                f.misclassified_pct, f.overstepped_pct, f.psnr,
+                f.sm_clock_mhz >= 0.0 ? fmt::format("{:.0f}", f.sm_clock_mhz) : "");
 
     // Per scene, what the frame governor walks: `fgplay xr --trade-offs trade_offs_<scene>.json`.
     std::vector<std::pair<std::string, nlohmann::json>> fronts;
@@ -181,6 +183,19 @@ void SequenceReport::write(const std::string& folder) const {
         "(naive, a tenth of the hit threshold, half steps, 4000 steps), mean and worst frame. Speed-ups (×) are the baseline's time "
         "over the setting's, same scene, trace and pixel set, same run.\n\n",
         kHeadsetHz, device, size, size, frames, count_every);
+    if (back_to_back)
+        md << "On this GPU a trace's timed frames ran back to back with nothing read back, so its driver saw a "
+              "busy GPU and kept its clock; the errors and counts come after, from each setting's counting "
+              "renderer rendering the same frames again in order (bit-identical frames).\n\n";
+    std::vector<double> clocks;
+    for (const auto& r : rows)
+        for (const auto& f : r.frames)
+            if (f.sm_clock_mhz >= 0.0) clocks.push_back(f.sm_clock_mhz);
+    if (!clocks.empty())
+        md << fmt::format(
+            "Shader clock just after each timed frame (NVML): median {:.0f} MHz, lowest {:.0f} MHz, of the "
+            "GPU's {} MHz.\n\n",
+            median(clocks), smallest(clocks), max_sm_mhz);
     if (load_start >= 0.0)
         md << fmt::format(
             "The run took {:.1f} min; the machine's 1-minute load average was {:.1f} at its start and "

@@ -21,6 +21,7 @@ struct SequenceFrame {
     std::size_t not_finite = 0;
     double evaluations_per_pixel = -1.0;   // from the counting renderer; < 0 on frames it skipped
     double iterations_per_pixel = -1.0;    // fractal loop iterations, the same way
+    double sm_clock_mhz = -1.0;            // the GPU's shader clock just after the timed frame; < 0 unknown
 };
 
 struct SequenceRow {
@@ -54,6 +55,8 @@ struct SequenceReport {
     int frames = 0, count_every = 1;
     // How busy the machine was: timings on a CPU device (lavapipe) share its cores with everything else.
     double load_start = -1.0, load_end = -1.0, wall_s = 0.0;
+    bool back_to_back = false;   // a trace's timed frames ran back to back, its errors and counts after
+    unsigned max_sm_mhz = 0;     // the GPU's highest shader clock; 0: not known (no NVML)
     std::vector<std::pair<std::string, std::string>> traces;   // name, motion
     std::vector<SequenceRow> rows;
 

@@ -20,6 +20,7 @@
 #include "frame/lens_mask.h"
 #include "frame/strict_reference.h"
 #include "frame_measures.h"
+#include "gpu_clock.h"
 #include "head_trace.h"
 #include "pack/pack_reader.h"
 #include "sequence_report.h"
@@ -128,51 +129,96 @@ void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel
     out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
 }
 
-// Before a trace: the trace's world scale, and one untimed frame so pipelines and caches are warm.
+// Before a trace: the trace's world scale, and one untimed frame on each renderer so pipelines and
+// caches are warm and a setting that reuses the frame before starts both renderers with one history.
 void warm_up(SettingRenderers& r, const HeadTrace& trace, const GpuScene& scene) {
-    r.timed->set_world_scale(trace.world_scale);
-    r.counting->set_world_scale(trace.world_scale);
-    set_brightness(*r.timed, scene, 1.0);
-    r.timed->render(trace.frames.front().head, trace.frames.front().time, 0);
+    const TraceFrame& first = trace.frames.front();
+    for (HeadlessRenderer* renderer : {r.timed.get(), r.counting.get()}) {
+        renderer->set_world_scale(trace.world_scale);
+        set_brightness(*renderer, scene, 1.0);
+        renderer->run(first.head, first.time, 0);
+    }
 }
 
-// Frame `i` of a trace on one setting's timed renderer and, every `count_every`-th frame, its counting
-// one. A dark frame renders nothing on either, as on a headset.
-void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame& ref,
-                  double pixel_half_diagonal, const GpuScene& scene, int count_every, SequenceRow& row) {
+// Frame `i` of a trace on a setting's timed renderer: its GPU times, and where `image` is given the
+// frame read back into it. A dark frame renders nothing, as on a headset.
+SequenceFrame time_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const GpuScene& scene,
+                         const GpuClock* clock, RenderedFrame* image) {
     const TraceFrame& tf = trace.frames[i];
     SequenceFrame f;
     f.index = static_cast<int>(i);
     f.dark = tf.brightness <= 0.0;
+    if (f.dark) return f;
+    set_brightness(*r.timed, scene, tf.brightness);
+    const auto index = static_cast<std::uint32_t>(i);
+    FrameStats stats;
+    if (image) {
+        *image = r.timed->render(tf.head, tf.time, index);
+        stats = image->stats;
+    } else {
+        stats = r.timed->run(tf.head, tf.time, index);
+    }
+    if (auto mhz = clock ? clock->sm_mhz() : std::nullopt) f.sm_clock_mhz = *mhz;
+    f.gpu_ms = stats.gpu_ms.count("frame") ? stats.gpu_ms.at("frame") : 0.0;
+    for (const char* pass : {"shade", "post", "fovea"})
+        if (auto it = stats.gpu_ms.find(pass); it != stats.gpu_ms.end()) f.after_march_ms += it->second;
+    return f;
+}
+
+// Frame `i` on a setting's counting renderer (bit-identical frames, PersistentLanes test); its counts go
+// into `f` and `row` where `counts_now`, and where `image` is given the frame is read back into it.
+void count_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const GpuScene& scene, bool counts_now,
+                 SequenceFrame& f, SequenceRow& row, RenderedFrame* image) {
+    const TraceFrame& tf = trace.frames[i];
+    set_brightness(*r.counting, scene, tf.brightness);
+    const auto index = static_cast<std::uint32_t>(i);
+    FrameStats counted;
+    if (image) {
+        *image = r.counting->render(tf.head, tf.time, index);
+        counted = image->stats;
+    } else {
+        counted = r.counting->run(tf.head, tf.time, index);
+    }
+    if (!counts_now) return;
+    if (auto it = counted.reuse_skipped.find("march.L0"); it != counted.reuse_skipped.end())
+        row.reuse_skipped_sum += it->second, ++row.reuse_skipped_frames;
+    f.evaluations_per_pixel = counted.evaluations_per_pixel;
+    f.iterations_per_pixel = counted.iterations_per_pixel;
+    if (row.counter_groups.empty())
+        for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
+    for (const auto& [group, lanes] : counted.lanes) {
+        row.lanes[group].busy += lanes.busy;
+        row.lanes[group].total += lanes.total;
+    }
+}
+
+// Interleaved (a CPU device's default): frame `i` timed, read back and compared, then counted every
+// `count_every` frames. A setting that reuses the frame before renders every frame on the counting
+// renderer too, so that its history is the timed one's.
+void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame& ref,
+                  double pixel_half_diagonal, const GpuScene& scene, const GpuClock* clock, int count_every,
+                  SequenceRow& row) {
+    RenderedFrame frame;
+    SequenceFrame f = time_frame(r, trace, i, scene, clock, &frame);
     if (!f.dark) {
-        const auto index = static_cast<std::uint32_t>(i);
-        set_brightness(*r.timed, scene, tf.brightness);
-        RenderedFrame frame = r.timed->render(tf.head, tf.time, index);
-        f.gpu_ms = frame.stats.gpu_ms.count("frame") ? frame.stats.gpu_ms.at("frame") : 0.0;
-        for (const char* pass : {"shade", "post", "fovea"})
-            if (auto it = frame.stats.gpu_ms.find(pass); it != frame.stats.gpu_ms.end()) f.after_march_ms += it->second;
         compare(frame, ref, pixel_half_diagonal, r, f);
-        // A setting that reuses the frame before renders every frame on the counting renderer too,
-        // so that its history is the timed one's; the figures are taken every count_every frames.
         const bool counts_now = i % static_cast<std::size_t>(count_every) == 0;
-        if (counts_now || r.counting->executor().graph().reuse) {
-            set_brightness(*r.counting, scene, tf.brightness);
-            FrameStats counted = r.counting->render(tf.head, tf.time, index).stats;
-            if (counts_now) {
-                if (auto it = counted.reuse_skipped.find("march.L0"); it != counted.reuse_skipped.end())
-                    row.reuse_skipped_sum += it->second, ++row.reuse_skipped_frames;
-                f.evaluations_per_pixel = counted.evaluations_per_pixel;
-                f.iterations_per_pixel = counted.iterations_per_pixel;
-                if (row.counter_groups.empty())
-                    for (const auto& [group, _] : counted.evaluations) row.counter_groups.push_back(group);
-                for (const auto& [group, lanes] : counted.lanes) {
-                    row.lanes[group].busy += lanes.busy;
-                    row.lanes[group].total += lanes.total;
-                }
-            }
-        }
+        if (counts_now || r.counting->executor().graph().reuse)
+            count_frame(r, trace, i, scene, counts_now, f, row, nullptr);
     }
     row.frames.push_back(f);
+}
+
+// Back to back (a GPU's default), after the trace's timed frames: frame `i` again on the counting renderer,
+// which renders every frame in order (so a reusing setting's history is the timed one's), read back and
+// compared, its counts taken every `count_every` frames.
+void measure_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame& ref,
+                   double pixel_half_diagonal, const GpuScene& scene, int count_every, SequenceRow& row) {
+    SequenceFrame& f = row.frames.at(i);
+    if (f.dark) return;
+    RenderedFrame frame;
+    count_frame(r, trace, i, scene, i % static_cast<std::size_t>(count_every) == 0, f, row, &frame);
+    compare(frame, ref, pixel_half_diagonal, r, f);
 }
 
 double load_average() {
@@ -215,6 +261,13 @@ int run_sequence_bench(const BenchOptions& o) {
     const auto settings = make_sequence_settings(size, o.quick);
     SequenceReport report;
     report.device = ctx.device_name();
+    // A GPU whose frames alternate with readbacks and comparisons looks idle to its driver, which
+    // lowers its clock (an H100 fell from 1980 to 345 MHz, frame times rising 5.7x): there the timed
+    // frames run back to back and the errors and counts come after. A CPU device (lavapipe) has no
+    // such clock, and the one pass saves it rendering every frame twice.
+    report.back_to_back = o.timing == "auto" ? !ctx.is_cpu_device() : o.timing == "back-to-back";
+    const auto clock = GpuClock::find(ctx.device_name());
+    report.max_sm_mhz = clock ? clock->max_sm_mhz() : 0;
     report.size = size;
     report.frames = frames;
     report.count_every = count_every;
@@ -313,13 +366,25 @@ int run_sequence_bench(const BenchOptions& o) {
             // Each frame goes through every setting before the next frame, starting with another setting
             // each time: a slow spell of a shared machine falls on all settings alike, not on whichever ran
             // then. Each renderer still renders the trace's frames in order.
-            for (std::size_t i = 0; i < trace.frames.size(); ++i) {
+            auto each_setting = [&](std::size_t i, const std::function<void(std::size_t)>& work) {
                 for (std::size_t k = 0; k < settings.size(); ++k) {
                     const std::size_t s = (i + k) % settings.size();
-                    attempt(s, [&] {
-                        render_frame(*renderers[s], trace, i, refs[i], half_diagonal, gpu_scene, count_every, rows[s]);
-                    });
+                    attempt(s, [&] { work(s); });
                 }
+            };
+            if (report.back_to_back)
+                for (std::size_t i = 0; i < trace.frames.size(); ++i)
+                    each_setting(i, [&](std::size_t s) {
+                        rows[s].frames.push_back(time_frame(*renderers[s], trace, i, gpu_scene, clock.get(), nullptr));
+                    });
+            for (std::size_t i = 0; i < trace.frames.size(); ++i) {
+                each_setting(i, [&](std::size_t s) {
+                    if (report.back_to_back)
+                        measure_frame(*renderers[s], trace, i, refs[i], half_diagonal, gpu_scene, count_every, rows[s]);
+                    else
+                        render_frame(*renderers[s], trace, i, refs[i], half_diagonal, gpu_scene, clock.get(), count_every,
+                                     rows[s]);
+                });
                 ++done;
                 if ((i + 1) % 15 == 0 && i + 1 < trace.frames.size()) {
                     fmt::print("{} {}: frame {}/{}  (about {} left)\n", scene.name, trace.name, i + 1,

@@ -11,6 +11,7 @@ DepthComparison compare_depths(std::span<const float> rendered, std::span<const 
     DepthComparison c;
     std::size_t n = std::min(rendered.size(), reference.size());
     std::vector<double> errors;
+    errors.reserve(std::min(rendered.size(), reference.size()));
     double cone = std::tan(pixel_half_diagonal);
     for (std::size_t i = 0; i < n; ++i) {
         if (i < visible.size() && !visible[i]) continue;
@@ -39,10 +40,15 @@ DepthComparison compare_depths(std::span<const float> rendered, std::span<const 
     }
     c.misclassified = c.pixels ? static_cast<double>(c.only_rendered + c.only_reference + c.not_finite) / c.pixels : 0.0;
     if (!errors.empty()) {
-        std::sort(errors.begin(), errors.end());
-        c.median_error = errors[errors.size() / 2];
-        c.p95_error = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
-        c.max_error = errors.back();
+        // Selection, not a sort: the same three order statistics in linear time (a sort of a 512² eye's
+        // errors took most of the sequence benchmark's time per frame on a GPU).
+        auto nth = [&](std::size_t k) {
+            std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end());
+            return errors[k];
+        };
+        c.max_error = *std::max_element(errors.begin(), errors.end());
+        c.p95_error = nth(std::min(errors.size() - 1, errors.size() * 95 / 100));
+        c.median_error = nth(errors.size() / 2);
     }
     return c;
 }

@@ -41,12 +41,16 @@ StereoViews HeadlessRenderer::make_views(const HeadPose& head) const {
 
 void HeadlessRenderer::set_world_scale(double world_scale) { stereo_.world_scale = world_scale; }
 
-RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
+FrameStats HeadlessRenderer::run(const HeadPose& head, double time, std::uint32_t frame_index) {
     views_ = make_views(head);
     GpuFrame gpu = make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index);
     executor_->set_frame(gpu);
+    return executor_->run();
+}
+
+RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::uint32_t frame_index) {
     RenderedFrame out;
-    out.stats = executor_->run();
+    out.stats = run(head, time, frame_index);
     bool mono = is_mono(frame_.projection);
     std::string left = mono ? "centre" : "left";
     out.left = rgba8_from_bytes(executor_->download("final." + left), frame_.width, frame_.height);
