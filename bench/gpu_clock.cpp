@@ -2,6 +2,10 @@
 
 #include <dlfcn.h>
 
+#include <chrono>
+
+#include "vk/context.h"
+
 namespace fg::bench {
 
 namespace {
@@ -62,6 +66,12 @@ std::optional<unsigned> GpuClock::sm_mhz() const {
     unsigned mhz = 0;
     if (nvml_->clock(device_, kClockSm, &mhz) != 0) return std::nullopt;
     return mhz;
+}
+
+void raise_gpu_clock(const vk::Context& ctx, const std::function<void()>& untimed_frame) {
+    if (ctx.is_cpu_device()) return;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+    while (std::chrono::steady_clock::now() < until) untimed_frame();
 }
 
 }  // namespace fg::bench

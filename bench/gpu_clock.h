@@ -2,9 +2,14 @@
 // The shader clock of an NVIDIA GPU, read through NVML (the driver's libnvidia-ml, opened at run
 // time), so a benchmark can say at what clock its GPU times were taken: an idle-looking load lets
 // the driver drop an H100 from 1980 to 345 MHz within seconds, and every time with it.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+
+namespace fg::vk {
+class Context;
+}
 
 namespace fg::bench {
 
@@ -26,5 +31,10 @@ private:
     void* device_;
     unsigned max_mhz_;
 };
+
+// On a GPU, untimed frames for half a second before frames are timed: whatever ran before (pipeline
+// builds, readbacks, comparisons) left it idle and its clock low, and it takes a busy spell to rise
+// (the H100's rose within 0.3 s). Nothing on a CPU device, which has no such clock.
+void raise_gpu_clock(const vk::Context& ctx, const std::function<void()>& untimed_frame);
 
 }  // namespace fg::bench
