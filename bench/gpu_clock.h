@@ -34,7 +34,8 @@ private:
 
 // On a GPU, untimed frames for half a second before frames are timed: whatever ran before (pipeline
 // builds, readbacks, comparisons) left it idle and its clock low, and it takes a busy spell to rise
-// (the H100's rose within 0.3 s). Nothing on a CPU device, which has no such clock.
+// (the H100's was up within 0.3 s of a process's start; how fast load alone raises it is not
+// measured). Nothing on a CPU device, which has no such clock.
 void raise_gpu_clock(const vk::Context& ctx, const std::function<void()>& untimed_frame);
 
 }  // namespace fg::bench
