@@ -140,6 +140,14 @@ void warm_up(SettingRenderers& r, const HeadTrace& trace, const GpuScene& scene)
     }
 }
 
+// Trace frame `i` on `renderer`: read back into `image` where one is given, else only its stats.
+FrameStats render_or_run(HeadlessRenderer& renderer, const TraceFrame& tf, std::size_t i, RenderedFrame* image) {
+    const auto index = static_cast<std::uint32_t>(i);
+    if (!image) return renderer.run(tf.head, tf.time, index);
+    *image = renderer.render(tf.head, tf.time, index);
+    return image->stats;
+}
+
 // Frame `i` of a trace on a setting's timed renderer: its GPU times, and where `image` is given the
 // frame read back into it. A dark frame renders nothing, as on a headset.
 SequenceFrame time_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const GpuScene& scene,
@@ -150,14 +158,7 @@ SequenceFrame time_frame(SettingRenderers& r, const HeadTrace& trace, std::size_
     f.dark = tf.brightness <= 0.0;
     if (f.dark) return f;
     set_brightness(*r.timed, scene, tf.brightness);
-    const auto index = static_cast<std::uint32_t>(i);
-    FrameStats stats;
-    if (image) {
-        *image = r.timed->render(tf.head, tf.time, index);
-        stats = image->stats;
-    } else {
-        stats = r.timed->run(tf.head, tf.time, index);
-    }
+    const FrameStats stats = render_or_run(*r.timed, tf, i, image);
     if (auto mhz = clock ? clock->sm_mhz() : std::nullopt) f.sm_clock_mhz = *mhz;
     f.gpu_ms = stats.gpu_ms.count("frame") ? stats.gpu_ms.at("frame") : 0.0;
     for (const char* pass : {"shade", "post", "fovea"})
@@ -171,14 +172,7 @@ void count_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, con
                  SequenceFrame& f, SequenceRow& row, RenderedFrame* image) {
     const TraceFrame& tf = trace.frames[i];
     set_brightness(*r.counting, scene, tf.brightness);
-    const auto index = static_cast<std::uint32_t>(i);
-    FrameStats counted;
-    if (image) {
-        *image = r.counting->render(tf.head, tf.time, index);
-        counted = image->stats;
-    } else {
-        counted = r.counting->run(tf.head, tf.time, index);
-    }
+    const FrameStats counted = render_or_run(*r.counting, tf, i, image);
     if (!counts_now) return;
     if (auto it = counted.reuse_skipped.find("march.L0"); it != counted.reuse_skipped.end())
         row.reuse_skipped_sum += it->second, ++row.reuse_skipped_frames;
