@@ -366,13 +366,13 @@ int run_sequence_bench(const BenchOptions& o) {
                     attempt(s, [&] { work(s); });
                 }
             };
-            if (report.back_to_back)
+            if (report.back_to_back) {
                 raise_gpu_clock(ctx, [&] { reference.run(trace.frames.front().head, trace.frames.front().time, 0); });
-            if (report.back_to_back)
                 for (std::size_t i = 0; i < trace.frames.size(); ++i)
                     each_setting(i, [&](std::size_t s) {
                         rows[s].frames.push_back(time_frame(*renderers[s], trace, i, gpu_scene, clock.get(), nullptr));
                     });
+            }
             for (std::size_t i = 0; i < trace.frames.size(); ++i) {
                 each_setting(i, [&](std::size_t s) {
                     if (report.back_to_back)
