@@ -79,7 +79,7 @@ void BenchReport::write(const std::string& folder) const {
                 md << fmt::format("Reference checked against the CPU twin (double precision) at {} pixels: {} "
                                   "disagree.\n\n",
                                   r.reference_cpu_checked, r.reference_cpu_disagree);
-        md << "| setting | frame ms | march | reproject | tail | shade | post | evals/px | wrong % | depth p50 | "
+        md << "| setting | frame ms | march | reproject | tail | shade | fovea fill | evals/px | wrong % | depth p50 | "
               "depth p95 | PSNR dB | NaN | time x | evals x |\n";
         md << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& r : rows) {
@@ -94,7 +94,7 @@ void BenchReport::write(const std::string& folder) const {
             md << fmt::format("| {}{}{} | {:.1f} | {} | {} | {} | {} | {} | {:.2f} | {:.3f} | {:.3f} | {:.2f} | {:.1f} | {} | "
                               "{:.2f} | {:.2f} |\n",
                               r.baseline ? "**" : "", r.setting, r.baseline ? "**" : "", r.frame_ms(), pass("march"),
-                              pass("reproject"), pass("tail"), pass("shade"), pass("post"), r.evaluations_per_pixel,
+                              pass("reproject"), pass("tail"), pass("shade"), pass("fovea"), r.evaluations_per_pixel,
                               r.misclassified_pct, r.depth_median, r.depth_p95, r.psnr, r.not_finite, r.time_speedup,
                               r.evaluation_speedup);
         }

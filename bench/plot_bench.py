@@ -55,7 +55,7 @@ fig.savefig(folder / "time_vs_error.png", dpi=110)
 # Time per pass, stacked, per setting (first view that has them all, preferring 'filled').
 view = "filled" if "filled" in views else views[0]
 sel = [r for r in rows if r["view"] == view]
-passes = ["march", "tail", "reproject", "shade", "post"]
+passes = ["march", "tail", "reproject", "shade", "fovea"]
 fig, ax = plt.subplots(figsize=(9, 0.28 * len(sel) + 1.5))
 left = [0.0] * len(sel)
 for p in passes:

@@ -161,7 +161,7 @@ SequenceFrame time_frame(SettingRenderers& r, const HeadTrace& trace, std::size_
     const FrameStats stats = render_or_run(*r.timed, tf, i, image);
     if (auto mhz = clock ? clock->sm_mhz() : std::nullopt) f.sm_clock_mhz = *mhz;
     f.gpu_ms = stats.gpu_ms.count("frame") ? stats.gpu_ms.at("frame") : 0.0;
-    for (const char* pass : {"shade", "post", "fovea"})
+    for (const char* pass : {"shade", "fovea"})
         if (auto it = stats.gpu_ms.find(pass); it != stats.gpu_ms.end()) f.after_march_ms += it->second;
     return f;
 }

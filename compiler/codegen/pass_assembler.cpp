@@ -99,8 +99,6 @@ AssembledPass assemble_pass(const PassTemplate& pass, const EffectSet& effects, 
         for (auto& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
         w.line(fmt::format("#define FG_HAS_{} 1", upper), gen);
     }
-    for (const auto& other : pass_templates())
-        if (other.name == "post" && other.runs_with(effects)) w.line("#define FG_HAS_POST 1", gen);
     scene.output_defines(w);
     // Only passes that evaluate the scene touch doubles (the others need no Float64 capability).
     if (scene.double_precision() && pass.needs_scene) w.line("#define FG_DOUBLE_SCENE 1", gen);

@@ -11,7 +11,7 @@ void add_fovea_passes(FrameGraph& g) {
         FramePass p;
         p.label = "fovea." + eye;
         p.program = "fovea";
-        p.timer = "post";
+        p.timer = "fovea";
         p.bind("fg_depth", "depth." + eye, Access::ReadWrite);
         p.bind("fg_final", "final." + eye, Access::ReadWrite);
         p.set_push(FoveaPush{view});

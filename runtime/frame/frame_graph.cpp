@@ -207,7 +207,11 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
         if (g.settings.stereo == StereoMode::Reproject) g.settings.stereo = StereoMode::PerEye;
     }
     g.effects = manifest.effects;
-    g.has_post = manifest.find_pass("post") != nullptr;
+    // Post effects moved into the shade pass; a pack from an fgc before that carries a post pass and
+    // a shade pass that writes for it, which this frame graph cannot bind.
+    if (manifest.find_pass("post"))
+        throw std::runtime_error("this pack has a separate post pass: it was compiled by an older fgc, whose shade pass "
+                                 "this runtime cannot run; recompile it from its graph with this fgc");
     g.manifest_has_tail = manifest.find_pass("tail") != nullptr;
     auto knob = [&](const char* name) {
         auto it = settings.knobs.find(name);

@@ -151,7 +151,6 @@ public:
     std::uint32_t width = 0, height = 0, centre_width = 0, centre_height = 0;
     FrameSettings settings;
     EffectSet effects;
-    bool has_post = false;             // the pack has a post pass: shade writes HDR for it
     std::uint32_t tail_after = 0;      // the tail_after knob: > 0 adds compacted tail passes
     bool persistent_lanes = false;     // the persistent_lanes knob (then there is no tail pass)
     // The reuse knob, where it can hold: per-eye perspective frames of a static float scene.

@@ -1,5 +1,5 @@
-// Shading in the frame graph (shader: shaders/shade.comp): writes the final image directly when
-// the pack has no post effects, or an HDR colour image for the post pass.
+// Shading in the frame graph (shader: shaders/shade.comp): shades each hit, applies the post effects
+// the pack lists and the tone map, and writes the final image.
 #include "frame_graph.h"
 
 namespace fg {
@@ -9,16 +9,18 @@ void add_shade_passes(FrameGraph& g) {
     const bool reuse_knob = knob != g.settings.knobs.end() && knob->second > 0.0;
     for (int view : g.output_views()) {
         std::string eye = view_name(view);
-        bool post = g.has_post;
-        std::string out = post ? "color." + eye : "final." + eye;
-        g.add_image({out, g.width, g.height, post ? ImageFormat::RGBA16F : ImageFormat::RGBA8,
-                     post ? "shaded colour (HDR)" : "final image"});
-        // Shading reuse: the right eye reads the left eye's shading (shaded first) where both see
-        // the same point. The program declares the other eye's images either way; without reuse
-        // they are this eye's own, so the eyes stay independent.
+        g.add_image({"final." + eye, g.width, g.height, ImageFormat::RGBA8, "final image"});
+        // Shading reuse: each eye keeps its colour before post effects; the right eye reads the left
+        // eye's (shaded first) where both see the same point. The program declares these images
+        // either way: without the knob they are one pixel, never written, and each eye's "other" is
+        // its own, so the eyes stay independent.
+        const std::string shaded = reuse_knob ? "color." + eye : "color." + eye + ".off";
+        if (reuse_knob)
+            g.add_image({shaded, g.width, g.height, ImageFormat::RGBA16F, "shaded colour before post (shading reuse)"});
+        else
+            g.add_image({shaded, 1, 1, ImageFormat::RGBA16F, "(shading reuse off)"});
         bool reuse = view == kRightView && reuse_knob;
         std::string other = reuse ? view_name(kLeftView) : eye;
-        std::string other_out = (post ? "color." : "final.") + other;
         // Shading history: this eye's colours before post and tone map, with their age, and their
         // hit distances, kept for the next frame. Without it the program still declares them: one
         // pixel each, never written.
@@ -39,8 +41,10 @@ void add_shade_passes(FrameGraph& g) {
             p.program = "shade";
             p.timer = "shade";
             p.bind("fg_depth", "depth." + eye, Access::Read);
-            p.bind("fg_color", out, Access::Write);
-            p.bind("fg_other_color", other_out, Access::Read);
+            p.bind("fg_final", "final." + eye, Access::Write);
+            if (g.effects.has(Effect::Glow)) p.bind("fg_glow", "glow." + eye, Access::Read);
+            p.bind("fg_shaded", shaded, Access::Write);
+            p.bind("fg_other_color", reuse ? "color." + other : shaded, Access::Read);
             p.bind("fg_other_depth", "depth." + other, Access::Read);
             p.bind("fg_history_color", history ? previous(cache) : cache + ".off", Access::Read);
             p.bind("fg_history_depth", history ? previous(cache_depth) : cache_depth + ".off", Access::Read);

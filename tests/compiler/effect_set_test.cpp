@@ -29,32 +29,34 @@ const std::string& glsl(const fg::CompileResult& r, const std::string& pass) {
 
 }  // namespace
 
-TEST(EffectSet, a_scene_without_fog_glow_or_vignette_gets_no_post_pass) {
+TEST(EffectSet, a_scene_without_fog_glow_or_vignette_gets_no_post_effect_code) {
     auto r = compile(minimal_graph());
     EXPECT_FALSE(r.manifest.effects.has(Effect::Fog));
     EXPECT_FALSE(r.manifest.effects.has(Effect::Glow));
-    EXPECT_FALSE(has_pass(r, "post"));
-    EXPECT_EQ(glsl(r, "shade").find("#define FG_HAS_POST"), std::string::npos);
+    for (const char* effect : {"FOG", "GLOW", "VIGNETTE"})
+        EXPECT_EQ(glsl(r, "shade").find(std::string("#define FG_HAS_") + effect), std::string::npos) << effect;
 }
 
-TEST(EffectSet, fog_in_the_scene_adds_the_effect_and_the_post_pass) {
+// Post effects are functions of one pixel: the shade pass applies them, no pass of their own.
+TEST(EffectSet, fog_in_the_scene_adds_the_effect_to_the_shade_pass_and_no_post_pass) {
     auto g = minimal_graph();
     g["scene"]["fog"] = {{"density", 0.2}};
     auto r = compile(g);
     EXPECT_TRUE(r.manifest.effects.has(Effect::Fog));
     EXPECT_FALSE(r.manifest.effects.has(Effect::Glow));
-    ASSERT_TRUE(has_pass(r, "post"));
+    EXPECT_NE(glsl(r, "shade").find("#define FG_HAS_FOG"), std::string::npos);
+    EXPECT_FALSE(has_pass(r, "post"));
     // No glow image is bound by any pass.
     for (const auto& p : r.manifest.passes)
         for (const auto& b : p.bindings) EXPECT_NE(b.name, "fg_glow") << p.name;
 }
 
-TEST(EffectSet, glow_adds_a_glow_image_to_the_march_and_post_passes) {
+TEST(EffectSet, glow_adds_a_glow_image_to_the_march_and_shade_passes) {
     auto g = minimal_graph();
     g["scene"]["glow"] = {{"intensity", 0.5}};
     auto r = compile(g);
     EXPECT_TRUE(r.manifest.effects.has(Effect::Glow));
-    for (const char* pass : {"naive", "conemarch", "post"}) {
+    for (const char* pass : {"naive", "conemarch", "shade"}) {
         bool bound = false;
         for (const auto& b : r.manifest.find_pass(pass)->bindings) bound |= b.name == "fg_glow";
         EXPECT_TRUE(bound) << pass;
@@ -112,5 +114,6 @@ TEST(EffectSet, scene_settings_turn_on_vignette_and_background_gradient) {
     auto r = compile(g);
     EXPECT_TRUE(r.manifest.effects.has(Effect::Vignette));
     EXPECT_TRUE(r.manifest.effects.has(Effect::BackgroundGradient));
-    EXPECT_TRUE(has_pass(r, "post"));
+    EXPECT_NE(glsl(r, "shade").find("#define FG_HAS_VIGNETTE"), std::string::npos);
+    EXPECT_FALSE(has_pass(r, "post"));
 }

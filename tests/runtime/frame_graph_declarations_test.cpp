@@ -51,10 +51,9 @@ TEST(FrameGraphBatches, the_two_eyes_march_side_by_side_and_each_pass_follows_wh
             << g.describe();
     EXPECT_LT(batch_of(g, "conemarch.left.L1"), batch_of(g, "conemarch.left.L0"));
     EXPECT_LT(batch_of(g, "conemarch.left.L0"), batch_of(g, "shade.left"));
-    EXPECT_LT(batch_of(g, "shade.left"), batch_of(g, "post.left"));
-    // 4 levels, shade, post: 6 batches, 5 barriers (one per pass and eye before: 11).
-    EXPECT_EQ(g.batches().size(), 6u) << g.describe();
-    EXPECT_NE(g.describe().find("5 barriers"), std::string::npos) << g.describe();
+    // 4 levels and shade (glow included): 5 batches, 4 barriers (one per pass and eye before: 9).
+    EXPECT_EQ(g.batches().size(), 5u) << g.describe();
+    EXPECT_NE(g.describe().find("4 barriers"), std::string::npos) << g.describe();
 }
 
 TEST(FrameGraphBatches, reprojection_waits_for_the_centre_eye_and_the_foveated_periphery_for_its_full_dispatch) {
@@ -65,7 +64,7 @@ TEST(FrameGraphBatches, reprojection_waits_for_the_centre_eye_and_the_foveated_p
     FrameGraph f = build(pack, StereoMode::PerEye, 4, 0.4);
     // Both dispatches write the depth image (disjoint pixels, but declared as one image).
     EXPECT_LT(batch_of(f, "conemarch.left.L0"), batch_of(f, "conemarch.left.L0.periphery"));
-    EXPECT_LT(batch_of(f, "post.left.periphery"), batch_of(f, "fovea.left"));
+    EXPECT_LT(batch_of(f, "shade.left.periphery"), batch_of(f, "fovea.left"));
 }
 
 TEST(FrameGraphBatches, a_pass_that_overwrites_what_another_reads_waits_for_the_reader) {

@@ -27,6 +27,20 @@ bool has_image(const FrameGraph& g, const std::string& prefix) {
     return false;
 }
 
+// An image of the eye's size whose name starts with prefix (the one-pixel stand-ins of knobs that
+// are off do not count).
+bool has_full_image(const FrameGraph& g, const std::string& prefix) {
+    for (const auto& i : g.images())
+        if (i.name.rfind(prefix, 0) == 0 && i.width > 1) return true;
+    return false;
+}
+
+const FramePass& pass_labelled(const FrameGraph& g, const std::string& label) {
+    for (const auto& p : g.passes())
+        if (p.label == label) return p;
+    throw std::runtime_error("no pass " + label + " in\n" + g.describe());
+}
+
 std::size_t passes_of(const FrameGraph& g, const std::string& program) {
     std::size_t n = 0;
     for (const auto& p : g.passes()) n += p.program == program;
@@ -35,31 +49,49 @@ std::size_t passes_of(const FrameGraph& g, const std::string& program) {
 
 }  // namespace
 
-TEST(FrameGraph, a_pack_without_fog_or_glow_allocates_no_glow_image_and_runs_no_post_pass) {
+TEST(FrameGraph, a_pack_without_fog_or_glow_allocates_no_glow_image_and_no_colour_before_post) {
     Pack pack = test::compile_pack(graph_with_scene("{}"));
     for (auto mode : {StereoMode::Naive, StereoMode::PerEye, StereoMode::Reproject}) {
         FrameGraph g = graph_for(pack, mode);
         EXPECT_FALSE(has_image(g, "glow.")) << g.describe();
-        EXPECT_FALSE(has_image(g, "color.")) << g.describe();
-        EXPECT_EQ(passes_of(g, "post"), 0u) << g.describe();
-        EXPECT_EQ(g.describe().find("post."), std::string::npos);
+        EXPECT_FALSE(has_full_image(g, "color.")) << g.describe();
+        EXPECT_TRUE(pass_labelled(g, "shade.left").writes_resource("final.left"));
     }
 }
 
-TEST(FrameGraph, fog_adds_a_post_pass_per_eye_but_no_glow_image) {
+// Fog is a function of each pixel's colour and depth: the shade pass applies it on its way to the
+// final image, with no pass and no HDR image of its own.
+TEST(FrameGraph, fog_is_applied_by_the_shade_pass_on_its_way_to_the_final_image) {
     Pack pack = test::compile_pack(graph_with_scene(R"({"fog": {"density": 0.3}})"));
     FrameGraph g = graph_for(pack, StereoMode::PerEye);
-    EXPECT_EQ(passes_of(g, "post"), 2u) << g.describe();
-    EXPECT_TRUE(has_image(g, "color.left"));
+    EXPECT_EQ(g.passes().back().program, "shade") << g.describe();
+    EXPECT_TRUE(pass_labelled(g, "shade.right").writes_resource("final.right"));
+    EXPECT_FALSE(has_full_image(g, "color.")) << g.describe();
     EXPECT_FALSE(has_image(g, "glow.")) << g.describe();
 }
 
-TEST(FrameGraph, glow_adds_glow_images_written_by_the_march_and_read_by_post) {
+TEST(FrameGraph, glow_adds_glow_images_written_by_the_march_and_read_by_shade) {
     Pack pack = test::compile_pack(graph_with_scene(R"({"glow": {"intensity": 0.5}})"));
     FrameGraph g = graph_for(pack, StereoMode::Reproject);
     EXPECT_TRUE(has_image(g, "glow.centre")) << g.describe();
     EXPECT_TRUE(has_image(g, "glow.left"));
-    EXPECT_EQ(passes_of(g, "post"), 2u);
+    EXPECT_TRUE(pass_labelled(g, "shade.left").reads_resource("glow.left"));
+    EXPECT_TRUE(pass_labelled(g, "shade.right").reads_resource("glow.right"));
+}
+
+// A pack from an fgc before post effects moved into the shade pass has a post pass that this frame
+// graph cannot bind: it is refused with the way out, not run into a wrong picture.
+TEST(FrameGraph, a_pack_with_a_separate_post_pass_is_refused_with_a_request_to_recompile) {
+    Pack pack = test::compile_pack(graph_with_scene(R"({"fog": {"density": 0.3}})"));
+    ManifestPass post = *pack.manifest.find_pass("shade");
+    post.name = "post";
+    pack.manifest.passes.push_back(post);
+    try {
+        graph_for(pack, StereoMode::PerEye);
+        FAIL() << "a pack with a post pass was accepted";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("recompile"), std::string::npos) << e.what();
+    }
 }
 
 TEST(FrameGraph, stereo_modes_run_their_own_passes) {

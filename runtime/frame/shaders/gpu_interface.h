@@ -146,11 +146,6 @@ struct ShadePush {
     int stride;
 };
 
-struct PostPush {
-    int view;
-    int stride;
-};
-
 struct ResolvePush {
     int view;
     int levels;              // 1: also the level-0 atlas (conemarch), 0: depth and glow only (naive)

@@ -5,21 +5,20 @@
 //! include: dispatch_tiles.glsl
 //! include-after-scene: shading.glsl
 // Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a
-// finite-difference normal only if something needs it, and the background for misses.
+// finite-difference normal only if something needs it, and the background for misses; then the
+// post effects the pack lists (fog, glow, vignette: each a function of this pixel alone, so they
+// cost no pass of their own) and the tone map, into the final image.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
-#ifdef FG_HAS_POST
-layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D fg_color;   // HDR, for post
-#else
-layout(set = 0, binding = 4, rgba8) uniform writeonly image2D fg_color;     // final, tonemapped
+layout(set = 0, binding = 4, rgba8) uniform writeonly image2D fg_final;
+#ifdef FG_HAS_GLOW
+layout(set = 0, binding = 11, r32f) uniform readonly image2D fg_glow;   // closest approach, from the march
 #endif
-// The other eye's shading and depth, for FG_SHADE_REUSE (bound either way).
-#ifdef FG_HAS_POST
+// Shading reuse across the eyes (FG_SHADE_REUSE): this eye's colour before post effects and the
+// tone map, and the other eye's with its depth (bound either way; written only with reuse).
+layout(set = 0, binding = 12, rgba16f) uniform writeonly image2D fg_shaded;
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_other_color;
-#else
-layout(set = 0, binding = 5, rgba8) uniform readonly image2D fg_other_color;
-#endif
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_other_depth;
 // This eye's shading of the frame before and of this one, for FG_SHADE_HISTORY (bound either way).
 layout(set = 0, binding = 7, rgba16f) uniform readonly image2D fg_history_color;   // rgb, a = age
@@ -86,13 +85,25 @@ bool fg_reuse_previous_frame(vec3 p, float t, out vec4 color)
     return length(old_hit - p) <= FG_SHADE_HISTORY * fg_cone_tan(0) * t;
 }
 
+// The final pixel: the post effects the pack lists, the tone map, and the fade (snap turns, the
+// head in the surface), which scales the displayed image linearly.
+void fg_store_final(ivec2 pixel, vec3 color, float t)
+{
+    float closest = 0.0;
+#ifdef FG_HAS_GLOW
+    closest = imageLoad(fg_glow, pixel).x;
+#endif
+    color = fg_post_effects(color, pixel, ivec2(fg_frame.eye_size), t, closest);
+    imageStore(fg_final, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
+}
+
 void main()
 {
     ivec2 pixel = fg_dispatch_cell(pc.stride, ivec2(gl_GlobalInvocationID.xy));
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
     if (fg_outside_lens(pc.view, pixel)) {
-        imageStore(fg_color, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        imageStore(fg_final, pixel, vec4(0.0, 0.0, 0.0, 1.0));
         if (FG_SHADE_HISTORY > 0.0) imageStore(fg_cache_depth, pixel, vec4(-1.0));
         return;
     }
@@ -102,18 +113,16 @@ void main()
     float t = imageLoad(fg_depth, pixel).x;
     vec3 color;
     float age = 0.0;
+    bool from_other_eye = false;
     if (t < 0.0) {
         color = fg_background(rd);
     } else {
         vec3 p = ro + rd * t;
         vec4 reused;
         if (FG_SHADE_REUSE > 0.0 && pc.reuse != 0 && fg_reuse_other_eye(p, reused)) {
-            imageStore(fg_color, pixel, reused);
-            // The other eye's colour is tone mapped without post: no source for the next frame.
-            if (FG_SHADE_HISTORY > 0.0) imageStore(fg_cache_depth, pixel, vec4(-1.0));
-            return;
-        }
-        if (FG_SHADE_HISTORY > 0.0 && fg_frame.shade_history != 0u && fg_reuse_previous_frame(p, t, reused)) {
+            color = reused.rgb;
+            from_other_eye = true;
+        } else if (FG_SHADE_HISTORY > 0.0 && fg_frame.shade_history != 0u && fg_reuse_previous_frame(p, t, reused)) {
             color = reused.rgb;
             age = reused.a + 1.0;
         } else {
@@ -124,14 +133,11 @@ void main()
             color = fg_shade_hit(p, rd, n).color;
         }
     }
+    if (FG_SHADE_REUSE > 0.0) imageStore(fg_shaded, pixel, vec4(color, 1.0));
     if (FG_SHADE_HISTORY > 0.0) {
+        // The other eye's colour saw the point from there: no source for the next frame.
         imageStore(fg_cache_color, pixel, vec4(color, age));
-        imageStore(fg_cache_depth, pixel, vec4(t));
+        imageStore(fg_cache_depth, pixel, vec4(from_other_eye ? -1.0 : t));
     }
-#ifdef FG_HAS_POST
-    imageStore(fg_color, pixel, vec4(color, 1.0));
-#else
-    // The fade (snap turns, the head in the surface) scales the displayed image linearly.
-    imageStore(fg_color, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
-#endif
+    fg_store_final(pixel, color, t);
 }
