@@ -102,9 +102,12 @@ run_fuzzers() {
 # hashes (the same passes run in the other runtime tests), the studio in Chromium and the Slurm
 # cluster (a browser and daemons, not our code), the 8K EXR memory bound (it bounds the plain
 # build; ASan doubles the heap), fgplay's benchmark sweep (5 min under ASan), every truncation of
-# a pack (90 s; the pack reader's fuzzer covers it under ASan) and the 2048x2056 eye whose tile list
-# takes two dispatch rows (58 s; its host code is the other FoveatedTiles tests', its rows the GPU's).
-SANITIZE_SKIP='^FrameHashes\.|^studio\.browser|^slurm\.|^ExrOutput\.an_8k|^fgplay\.renders_refuses_bad_packs_and_benchmarks$|^Pack\.every_truncation|^FoveatedTiles\.an_eye_of_more_tiles_than_a_dispatch_row'
+# a pack (90 s; the pack reader's fuzzer covers it under ASan), the 2048x2056 eye whose tile list
+# takes two dispatch rows (58 s; its host code is the other FoveatedTiles tests', its rows the GPU's)
+# and the same for frames against whole-image dispatches (39 s), and compiling the whole gallery in
+# float and in double (85 s and 44 s, mostly glslang and spirv-val under ASan's allocator; the other
+# compile tests and the compiler's fuzzer run our compiler under ASan).
+SANITIZE_SKIP='^FrameHashes\.|^studio\.browser|^slurm\.|^ExrOutput\.an_8k|^fgplay\.renders_refuses_bad_packs_and_benchmarks$|^Pack\.every_truncation|^FoveatedTiles\.an_eye_of_more_tiles_than_a_dispatch_row|^FoveatedTiles\.frames_are_bit_identical_to_dispatches_over_the_whole_image$|^Compile\.every_gallery_graph_compiles|^DoublePrecision\.the_gallery_compiles_in_double'
 run_sanitized_tests() {
   local san=$BUILD-sanitize start=$SECONDS
   if [ ! -f "$san/build.ninja" ]; then
