@@ -23,19 +23,27 @@ cmake --build "$FUZZ" -j "$JOBS" >"$FUZZ/build.log" 2>&1 || { tail -60 "$FUZZ/bu
 
 count() { find "$1" -type f 2>/dev/null | wc -l; }
 rows=()
+# The fuzzers run side by side (each is one process, one thread): the minute each is a minute of
+# wall time for all of them, not one after another.
+declare -A before pid
 for target in "${FUZZERS[@]}"; do
   corpus=$FUZZ/corpus/$target log=$FUZZ/$target.log
   mkdir -p "$corpus"
-  before=$(count "$corpus")
+  before[$target]=$(count "$corpus")
   echo "fuzzing $target for ${SECONDS_EACH}s (log: $log)"
   # -timeout: one compile of a strange graph under ASan takes seconds, not minutes.
-  if ! "$FUZZ/tests/fuzz/$target" -max_total_time="$SECONDS_EACH" -print_final_stats=1 -close_fd_mask=3 -timeout=120 \
-      -rss_limit_mb=4096 -artifact_prefix="$FUZZ/$target-" "$corpus" "$ROOT/tests/fuzz/corpus/${target#fuzz_}" >"$log" 2>&1; then
-    tail -60 "$log"; echo "$target found a crash (reproducer: $FUZZ/$target-crash-*)"; exit 1
+  "$FUZZ/tests/fuzz/$target" -max_total_time="$SECONDS_EACH" -print_final_stats=1 -close_fd_mask=3 -timeout=120 \
+    -rss_limit_mb=4096 -artifact_prefix="$FUZZ/$target-" "$corpus" "$ROOT/tests/fuzz/corpus/${target#fuzz_}" >"$log" 2>&1 &
+  pid[$target]=$!
+done
+for target in "${FUZZERS[@]}"; do
+  log=$FUZZ/$target.log
+  if ! wait "${pid[$target]}"; then
+    tail -60 "$log"; echo "$target found a crash (reproducer: $FUZZ/$target-crash-*)"; kill "${pid[@]}" 2>/dev/null; exit 1
   fi
   runs=$(grep -oE '^stat::number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+$')
   cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+$')
-  rows+=("| $target | ${SECONDS_EACH} s | $runs | $((runs / SECONDS_EACH)) | $before -> $(count "$corpus") | $cov |")
+  rows+=("| $target | ${SECONDS_EACH} s | $runs | $((runs / SECONDS_EACH)) | ${before[$target]} -> $(count "$FUZZ/corpus/$target") | $cov |")
 done
 printf '\n| fuzzer | time | executions | per second | corpus (inputs, before -> after) | coverage (edges) |\n'
 printf '|---|---|---|---|---|---|\n'
