@@ -15,22 +15,34 @@ namespace {
 
 constexpr std::uint32_t kSize = 96;
 
-RenderedFrame render(const Pack& pack, double reuse) {
+struct Scene {
+    const char* graph;
+    glm::dvec3 eye, target;
+};
+
+RenderedFrame render(const Pack& pack, const Scene& scene, double reuse) {
     FrameSettings fs;
     fs.width = fs.height = kSize;
     fs.knobs["shade_reuse"] = reuse;
     HeadlessRenderer r(test::shared_context(), pack, fs, StereoSettings{kSize, kSize});
-    return r.render(look_at({0.25, 0.55, 1.05}, {0.0, 0.2, 0.0}), 0.0);
+    return r.render(look_at(scene.eye, scene.target), 0.0);
 }
 
-class ShadingReuse : public RuntimeTest {};
+class ShadingReuse : public RuntimeTest, public ::testing::WithParamInterface<Scene> {};
 
 }  // namespace
 
-TEST_F(ShadingReuse, the_right_eye_reuses_the_left_eyes_shading_where_both_see_the_same_point) {
-    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
-    RenderedFrame own = render(pack, 0.0);
-    RenderedFrame reused = render(pack, 1.0);
+// The Kleinian has fog: the colour taken is the left eye's before post effects, and the right eye
+// fogs it by its own depth (taking the left eye's fogged colour, or none, would fail the PSNR).
+INSTANTIATE_TEST_SUITE_P(Scenes, ShadingReuse,
+                         ::testing::Values(Scene{"graphs/gallery/mandelbulb.json", {0.25, 0.55, 1.05}, {0.0, 0.2, 0.0}},
+                                           Scene{"graphs/gallery/kleinian.json", {0.6, 0.3, 0.9}, {0.0, 0.0, 0.0}}),
+                         [](const auto& info) { return info.index == 0 ? "mandelbulb" : "kleinian_with_fog"; });
+
+TEST_P(ShadingReuse, the_right_eye_reuses_the_left_eyes_shading_where_both_see_the_same_point) {
+    Pack pack = test::compile_pack(test::read_source_file(GetParam().graph));
+    RenderedFrame own = render(pack, GetParam(), 0.0);
+    RenderedFrame reused = render(pack, GetParam(), 1.0);
     EXPECT_EQ(own.left.pixels, reused.left.pixels) << "the left eye shades everything itself";
     EXPECT_EQ(own.depth_right, reused.depth_right) << "reuse changes colours only";
     std::size_t changed = 0;
