@@ -4,6 +4,22 @@
 
 namespace fg {
 
+namespace {
+
+// An image the shade program declares whether or not its knob is on: the eye's size when it is, a
+// never-written pixel named NAME.off when it is not. Returns the name to bind.
+std::string image_or_stand_in(FrameGraph& g, const std::string& name, bool on, ImageFormat format,
+                              const std::string& about, const std::string& off_about) {
+    if (on) {
+        g.add_image({name, g.width, g.height, format, about});
+        return name;
+    }
+    g.add_image({name + ".off", 1, 1, format, off_about});
+    return name + ".off";
+}
+
+}  // namespace
+
 void add_shade_passes(FrameGraph& g) {
     auto knob = g.settings.knobs.find("shade_reuse");
     const bool reuse_knob = knob != g.settings.knobs.end() && knob->second > 0.0;
@@ -11,29 +27,22 @@ void add_shade_passes(FrameGraph& g) {
         std::string eye = view_name(view);
         g.add_image({"final." + eye, g.width, g.height, ImageFormat::RGBA8, "final image"});
         // Shading reuse: each eye keeps its colour before post effects; the right eye reads the left
-        // eye's (shaded first) where both see the same point. The program declares these images
-        // either way: without the knob they are one pixel, never written, and each eye's "other" is
-        // its own, so the eyes stay independent.
-        const std::string shaded = reuse_knob ? "color." + eye : "color." + eye + ".off";
-        if (reuse_knob)
-            g.add_image({shaded, g.width, g.height, ImageFormat::RGBA16F, "shaded colour before post (shading reuse)"});
-        else
-            g.add_image({shaded, 1, 1, ImageFormat::RGBA16F, "(shading reuse off)"});
+        // eye's (shaded first) where both see the same point. Without the knob each eye's "other"
+        // is its own, so the eyes stay independent.
+        const std::string shaded = image_or_stand_in(g, "color." + eye, reuse_knob, ImageFormat::RGBA16F,
+                                                     "shaded colour before post (shading reuse)", "(shading reuse off)");
         bool reuse = view == kRightView && reuse_knob;
         std::string other = reuse ? view_name(kLeftView) : eye;
         // Shading history: this eye's colours before post and tone map, with their age, and their
-        // hit distances, kept for the next frame. Without it the program still declares them: one
-        // pixel each, never written.
+        // hit distances, kept for the next frame.
         const bool history = g.shade_history;
-        const std::string cache = "shade_cache." + eye, cache_depth = "shade_depth." + eye;
+        const std::string cache = image_or_stand_in(g, "shade_cache." + eye, history, ImageFormat::RGBA16F,
+                                                    "shading before post, its age (history)", "(shading history off)");
+        const std::string cache_depth = image_or_stand_in(g, "shade_depth." + eye, history, ImageFormat::R32F,
+                                                          "hit distance of the shading (history)", "(shading history off)");
         if (history) {
-            g.add_image({cache, g.width, g.height, ImageFormat::RGBA16F, "shading before post, its age (history)"});
-            g.add_image({cache_depth, g.width, g.height, ImageFormat::R32F, "hit distance of the shading (history)"});
             g.keep_for_next_frame(cache);
             g.keep_for_next_frame(cache_depth);
-        } else {
-            g.add_image({cache + ".off", 1, 1, ImageFormat::RGBA16F, "(shading history off)"});
-            g.add_image({cache_depth + ".off", 1, 1, ImageFormat::R32F, "(shading history off)"});
         }
         g.add_pixel_pass(view, [&](int stride) {
             FramePass p;
@@ -46,10 +55,10 @@ void add_shade_passes(FrameGraph& g) {
             p.bind("fg_shaded", shaded, Access::Write);
             p.bind("fg_other_color", reuse ? "color." + other : shaded, Access::Read);
             p.bind("fg_other_depth", "depth." + other, Access::Read);
-            p.bind("fg_history_color", history ? previous(cache) : cache + ".off", Access::Read);
-            p.bind("fg_history_depth", history ? previous(cache_depth) : cache_depth + ".off", Access::Read);
-            p.bind("fg_cache_color", history ? cache : cache + ".off", Access::Write);
-            p.bind("fg_cache_depth", history ? cache_depth : cache_depth + ".off", Access::Write);
+            p.bind("fg_history_color", history ? previous(cache) : cache, Access::Read);
+            p.bind("fg_history_depth", history ? previous(cache_depth) : cache_depth, Access::Read);
+            p.bind("fg_cache_color", cache, Access::Write);
+            p.bind("fg_cache_depth", cache_depth, Access::Write);
             p.set_push(ShadePush{view, reuse ? 1 : 0, stride});
             return p;
         });
