@@ -35,7 +35,30 @@ void SceneCodegen::output_defines(GlslWriter& w) const {
         std::string upper = name;
         for (auto& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
         w.line(fmt::format("#define FG_OUT_{} 1", upper), generated());
+        // Outputs computed from the direction to the camera: shading reuse recomputes them.
+        if (name != "distance" && reads_to_camera(ir_.outputs.at(name)))
+            w.line(fmt::format("#define FG_OUT_{}_READS_VIEW 1", upper), generated());
     }
+}
+
+bool SceneCodegen::reads_to_camera(const IrInput& root) const {
+    auto to_camera = [](const IrInput& in) { return in.kind == IrInput::Kind::Implicit && in.implicit == ImplicitSource::ToCamera; };
+    if (to_camera(root)) return true;
+    std::vector<bool> needed = needed_by({&root});
+    for (std::size_t i = 0; i < ir_.nodes.size(); ++i)
+        if (needed[i])
+            for (const auto& in : ir_.nodes[i].inputs)
+                if (to_camera(in)) return true;
+    return false;
+}
+
+std::vector<const IrInput*> SceneCodegen::view_roots() const {
+    std::vector<const IrInput*> roots;
+    for (const char* name : {"ao", "sss", "rim"}) {
+        auto it = ir_.outputs.find(name);
+        if (it != ir_.outputs.end() && reads_to_camera(it->second)) roots.push_back(&it->second);
+    }
+    return roots;
 }
 
 void SceneCodegen::declarations(GlslWriter& w) const {
@@ -199,17 +222,18 @@ void SceneCodegen::distance_function(GlslWriter& w) const {
     w.blank();
 }
 
+void SceneCodegen::shading_function_head(GlslWriter& w, const char* name) const {
+    // In double precision p is relative to the anchor, and the bodies see the absolute point.
+    w.line(fmt::format("FgSurface {}(vec3 {}, vec3 fg_to_camera, vec3 fg_normal)", name, double_ ? "fg_relative_p" : "p"),
+           generated());
+    w.line("{", generated());
+    if (double_) w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
+}
+
 void SceneCodegen::surface_function(GlslWriter& w) const {
     bodies(w, needed_by(surface_roots()), needed_by({&ir_.outputs.at("distance")}));
     w.line("struct FgSurface { vec3 albedo; float diffuse; float ao; float sss; float rim; vec3 emission; };", generated());
-    if (double_) {
-        w.line("FgSurface fg_scene_surface(vec3 fg_relative_p, vec3 fg_to_camera, vec3 fg_normal)", generated());
-        w.line("{", generated());
-        w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
-    } else {
-        w.line("FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)", generated());
-        w.line("{", generated());
-    }
+    shading_function_head(w, "fg_scene_surface");
     function_body(w, surface_roots(), true);
     auto field = [&](const char* name, const char* fallback) {
         auto it = ir_.outputs.find(name);
@@ -224,6 +248,25 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     w.line(fmt::format("    s.sss = {};", field("sss", "0.0")), generated());
     w.line(fmt::format("    s.rim = {};", field("rim", "0.0")), generated());
     w.line(fmt::format("    s.emission = {};", field("emission", "vec3(0.0)")), generated());
+    w.line("    return s;", generated());
+    w.line("}", generated());
+    w.blank();
+    view_terms_function(w, field);
+}
+
+void SceneCodegen::view_terms_function(GlslWriter& w, const std::function<std::string(const char*, const char*)>& field) const {
+    // Only the scalar terms that read the view: the shade pass adds them to a colour shaded from
+    // another point of view (FG_OUT_AO_READS_VIEW and the like say which); the rest keep defaults.
+    auto view = [&](const char* name, const char* fallback) {
+        auto it = ir_.outputs.find(name);
+        return it != ir_.outputs.end() && reads_to_camera(it->second) ? field(name, fallback) : std::string(fallback);
+    };
+    shading_function_head(w, "fg_scene_view_terms");
+    function_body(w, view_roots(), true);
+    w.line("    FgSurface s = FgSurface(vec3(0.0), 0.0, 1.0, 0.0, 0.0, vec3(0.0));", generated());
+    w.line(fmt::format("    s.ao = {};", view("ao", "1.0")), generated());
+    w.line(fmt::format("    s.sss = {};", view("sss", "0.0")), generated());
+    w.line(fmt::format("    s.rim = {};", view("rim", "0.0")), generated());
     w.line("    return s;", generated());
     w.line("}", generated());
     w.blank();

@@ -3,9 +3,11 @@
 // graph uses (each once), custom-code functions, and the two entry points the pass templates call:
 //   float fg_scene_distance(vec3 p)                      only what the distance needs
 //   FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)   everything else
+//   FgSurface fg_scene_view_terms(...)   only the terms that read the view (shading reuse)
 // With scene.precision "double" the bodies are lowered to double (double_lowering.h) and evaluated
 // at fg_anchor() + p: the passes march in float relative to the camera, whose position the frame
 // uniforms hold in double (hi + lo floats), so positions keep their digits at any zoom.
+#include <functional>
 #include <set>
 #include <string>
 
@@ -46,6 +48,13 @@ private:
     // Nodes the distance (or the surface outputs) need, by IR index.
     std::vector<bool> needed_by(const std::vector<const IrInput*>& roots) const;
     std::vector<const IrInput*> surface_roots() const;
+    // Whether a value depends on the direction to the camera, and the scalar surface outputs that do.
+    bool reads_to_camera(const IrInput& root) const;
+    std::vector<const IrInput*> view_roots() const;
+    // "FgSurface name(p, fg_to_camera, fg_normal) {" and, in double, the absolute point.
+    void shading_function_head(GlslWriter& w, const char* name) const;
+    // FgSurface fg_scene_view_terms(p, fg_to_camera, fg_normal): only the view_roots() outputs.
+    void view_terms_function(GlslWriter& w, const std::function<std::string(const char*, const char*)>& field) const;
     // Bodies of the nodes in `want` whose type is not in `skip` (each type and instance once).
     void bodies(GlslWriter& w, const std::vector<bool>& want, const std::vector<bool>& skip) const;
     void function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const;

@@ -52,14 +52,15 @@ inline constexpr std::array<GlobalKnob, 18> kGlobalKnobs{{
     {14, "tail_after", "FG_TAIL_AFTER", ValueType::Int, 0, 0, 4096,
      "full-resolution steps before a still-marching pixel moves to the compacted tail pass; 0 is off"},
     {15, "shade_reuse", "FG_SHADE_REUSE", ValueType::Float, 0.0, 0.0, 16.0,
-     "the right eye takes the left eye's shading where both see the same point within this many cone radii; 0 is off"},
+     "the right eye takes the left eye's shading where both see the same point within this many cone radii "
+     "(terms that read the view are recomputed); 0 is off"},
     {16, "persistent_lanes", "FG_PERSISTENT_LANES", ValueType::Bool, 0, 0, 1,
      "full-resolution marching passes hand each SIMD lane the next pixel as soon as its ray ends (same frames)"},
     {17, "reuse", "FG_REUSE", ValueType::Bool, 0, 0, 1,
      "per-eye conemarch starts each cone where the previous frame's levels prove it empty (a static scene)"},
     {18, "shade_history", "FG_SHADE_HISTORY", ValueType::Float, 0.0, 0.0, 8.0,
      "an eye takes the previous frame's shading where it hits the same point within this many cone radii "
-     "(a static scene without view-dependent terms); 0 is off"},
+     "(a static scene without rim or SSS; terms that read the view are recomputed); 0 is off"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -103,9 +103,11 @@ json manifest_to_json(const PackManifest& m) {
                 {"spec_constants", p.spec_constants},
                 {"dispatch_constants", p.dispatch_constants},
                 {"bindings", json::array()}};
-        for (const auto& b : p.bindings)
-            pj["bindings"].push_back(
-                {{"set", b.set}, {"binding", b.binding}, {"kind", b.kind}, {"name", b.name}, {"access", b.access}});
+        for (const auto& b : p.bindings) {
+            json bj{{"set", b.set}, {"binding", b.binding}, {"kind", b.kind}, {"name", b.name}, {"access", b.access}};
+            if (!b.format.empty()) bj["format"] = b.format;
+            pj["bindings"].push_back(bj);
+        }
         j["passes"].push_back(pj);
     }
     j["spec_constants"] = json::array();
@@ -229,6 +231,7 @@ std::optional<PackManifest> manifest_from_json(const json& j, Diagnostics& diag)
             r.required(bj, "kind", bp, b.kind, Choices{"uniform_buffer", "storage_buffer", "storage_image", "sampled_image"});
             r.required(bj, "name", bp, b.name);
             r.optional(bj, "access", bp, b.access, Choices{"read", "write", "read_write"});
+            r.optional(bj, "format", bp, b.format);
             p.bindings.push_back(b);
         });
         if (!pass_names.insert(p.name).second) r.error(fmt::format("pass \"{}\" listed twice", p.name), ptr);

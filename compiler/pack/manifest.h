@@ -37,6 +37,9 @@ struct ManifestBinding {
     // What the shader may do with it, from its qualifiers: "read" (readonly, uniform blocks),
     // "write" (writeonly) or "read_write". Packs from before it was recorded read as "read_write".
     std::string access = "read_write";
+    // Storage images: the declared format ("rgba16f"), which the bound image must have. Empty in
+    // packs from before it was recorded.
+    std::string format;
 };
 
 // An accuracy knob as a specialization constant. Ids start at 1: id 0 is never used.

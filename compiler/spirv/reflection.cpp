@@ -33,6 +33,19 @@ std::string binding_access(spvc_compiler compiler, spvc_variable_id id, spvc_res
     return no_write ? "read" : no_read ? "write" : "read_write";
 }
 
+// A storage image's declared format, named as the runtime's frame graph names its images.
+std::string image_format(spvc_compiler compiler, spvc_type_id type_id) {
+    switch (spvc_type_get_image_storage_format(spvc_compiler_get_type_handle(compiler, type_id))) {
+        case SpvImageFormatR32f: return "r32f";
+        case SpvImageFormatRg32f: return "rg32f";
+        case SpvImageFormatRgba16f: return "rgba16f";
+        case SpvImageFormatRgba32f: return "rgba32f";
+        case SpvImageFormatRgba8: return "rgba8";
+        case SpvImageFormatRgba32ui: return "rgba32ui";
+        default: return "other";
+    }
+}
+
 }  // namespace
 
 std::optional<PassReflection> reflect_spirv(const std::string& pass, const std::vector<std::uint32_t>& words,
@@ -75,6 +88,7 @@ std::optional<PassReflection> reflect_spirv(const std::string& pass, const std::
             b.kind = kind.name;
             b.name = list[i].name;
             b.access = binding_access(compiler, list[i].id, kind.type);
+            if (kind.type == SPVC_RESOURCE_TYPE_STORAGE_IMAGE) b.format = image_format(compiler, list[i].type_id);
             if (kind.type == SPVC_RESOURCE_TYPE_UNIFORM_BUFFER) {
                 spvc_type type = spvc_compiler_get_type_handle(compiler, list[i].base_type_id);
                 BlockLayout layout;

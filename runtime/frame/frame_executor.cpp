@@ -27,6 +27,7 @@ VkFormat vk_format(ImageFormat f) {
         case ImageFormat::RGBA16F: return VK_FORMAT_R16G16B16A16_SFLOAT;
         case ImageFormat::RGBA32F: return VK_FORMAT_R32G32B32A32_SFLOAT;
         case ImageFormat::RGBA8: return VK_FORMAT_R8G8B8A8_UNORM;
+        case ImageFormat::RGBA32UI: return VK_FORMAT_R32G32B32A32_UINT;
     }
     return VK_FORMAT_R32_SFLOAT;
 }
@@ -164,6 +165,17 @@ void FrameExecutor::check_declarations() const {
                 throw std::runtime_error(fmt::format("pass {} binds {} to '{}', which its shader {}, but the pass does not "
                                                      "declare it: its barriers would be wrong",
                                                      pass.label, resource, b.name, problem));
+            const FrameImage* image = b.kind == "storage_image" ? graph_.find_image(resource) : nullptr;
+            if (!image && b.kind == "storage_image" && resource.ends_with(".previous"))
+                image = graph_.find_image(resource.substr(0, resource.size() - 9));
+            if (image && b.format.empty())
+                throw std::runtime_error(fmt::format("pass {}: the pack does not record its images' formats, so it was "
+                                                     "compiled by an older fgc; recompile it from its graph with this fgc",
+                                                     pass.label));
+            if (image && b.format != image_format_name(image->format))
+                throw std::runtime_error(fmt::format("pass {} binds {} ({}) to '{}', which its shader declares {}: "
+                                                     "recompile the pack from its graph with this fgc",
+                                                     pass.label, resource, image_format_name(image->format), b.name, b.format));
         }
         for (const auto& r : pass.reads)
             if (!graph_.find_image(r) && !graph_.find_buffer(r) && !(r.ends_with(".previous") &&

@@ -35,12 +35,13 @@ const char* image_format_name(ImageFormat f) {
         case ImageFormat::RGBA16F: return "rgba16f";
         case ImageFormat::RGBA32F: return "rgba32f";
         case ImageFormat::RGBA8: return "rgba8";
+        case ImageFormat::RGBA32UI: return "rgba32ui";
     }
     return "?";
 }
 
 std::uint32_t bytes_per_pixel(ImageFormat f) {
-    if (f == ImageFormat::RGBA32F) return 16;
+    if (f == ImageFormat::RGBA32F || f == ImageFormat::RGBA32UI) return 16;
     return f == ImageFormat::RG32F || f == ImageFormat::RGBA16F ? 8 : 4;
 }
 

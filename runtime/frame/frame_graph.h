@@ -25,7 +25,7 @@
 
 namespace fg {
 
-enum class ImageFormat { R32F, RG32F, RGBA16F, RGBA32F, RGBA8 };
+enum class ImageFormat { R32F, RG32F, RGBA16F, RGBA32F, RGBA8, RGBA32UI };
 const char* image_format_name(ImageFormat f);
 std::uint32_t bytes_per_pixel(ImageFormat f);
 

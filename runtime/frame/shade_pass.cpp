@@ -26,18 +26,19 @@ void add_shade_passes(FrameGraph& g) {
     for (int view : g.output_views()) {
         std::string eye = view_name(view);
         g.add_image({"final." + eye, g.width, g.height, ImageFormat::RGBA8, "final image"});
-        // Shading reuse: each eye keeps its colour before post effects; the right eye reads the left
-        // eye's (shaded first) where both see the same point. Without the knob each eye's "other"
-        // is its own, so the eyes stay independent.
-        const std::string shaded = image_or_stand_in(g, "color." + eye, reuse_knob, ImageFormat::RGBA16F,
-                                                     "shaded colour before post (shading reuse)", "(shading reuse off)");
+        // Shading reuse: each eye keeps its shading before post effects, as terms (the colour without
+        // the terms that read the view, and the albedo); the right eye reads the left eye's (shaded
+        // first) where both see the same point. Without the knob each eye's "other" is its own, so the
+        // eyes stay independent.
+        const std::string shaded = image_or_stand_in(g, "color." + eye, reuse_knob, ImageFormat::RGBA32UI,
+                                                     "shading before post as terms (shading reuse)", "(shading reuse off)");
         bool reuse = view == kRightView && reuse_knob;
         std::string other = reuse ? view_name(kLeftView) : eye;
-        // Shading history: this eye's colours before post and tone map, with their age, and their
-        // hit distances, kept for the next frame.
+        // Shading history: this eye's shading before post and tone map as the same terms, with their
+        // age, and their hit distances, kept for the next frame.
         const bool history = g.shade_history;
-        const std::string cache = image_or_stand_in(g, "shade_cache." + eye, history, ImageFormat::RGBA16F,
-                                                    "shading before post, its age (history)", "(shading history off)");
+        const std::string cache = image_or_stand_in(g, "shade_cache." + eye, history, ImageFormat::RGBA32UI,
+                                                    "shading before post as terms, its age (history)", "(shading history off)");
         const std::string cache_depth = image_or_stand_in(g, "shade_depth." + eye, history, ImageFormat::R32F,
                                                           "hit distance of the shading (history)", "(shading history off)");
         if (history) {

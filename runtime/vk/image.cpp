@@ -18,6 +18,7 @@ std::uint32_t bytes_per_pixel(VkFormat format) {
         case VK_FORMAT_R32G32_SFLOAT: return 8;
         case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
         case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+        case VK_FORMAT_R32G32B32A32_UINT: return 16;
         case VK_FORMAT_R8G8B8A8_UNORM: return 4;
         default:
             throw std::invalid_argument(
@@ -32,6 +33,7 @@ const char* format_name(VkFormat format) {
         case VK_FORMAT_R16G16B16A16_SFLOAT: return "R16G16B16A16_SFLOAT";
         case VK_FORMAT_R32G32B32A32_SFLOAT: return "R32G32B32A32_SFLOAT";
         case VK_FORMAT_R8G8B8A8_UNORM: return "R8G8B8A8_UNORM";
+        case VK_FORMAT_R32G32B32A32_UINT: return "R32G32B32A32_UINT";
         default: return "unsupported format";
     }
 }

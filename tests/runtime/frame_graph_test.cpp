@@ -2,6 +2,8 @@
 // running it.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "frame/frame_graph.h"
 #include "runtime_test_support.h"
 
@@ -143,4 +145,30 @@ TEST_F(FrameGraphRun, an_unknown_knob_is_refused_with_the_list_of_knobs) {
                   std::string::npos)
             << e.what();
     }
+}
+
+// A shader that declares an image in another format than the frame graph allocates would read and
+// write garbage (shading reuse's images changed from rgba16f to rgba32ui): the executor compares each
+// storage image's declared format, which the pack records, and refuses a pack that records none.
+TEST_F(FrameGraphRun, an_image_in_another_format_than_its_shader_declares_is_refused) {
+    FrameSettings s;
+    s.width = s.height = 32;
+    auto refusal = [&](const std::function<void(ManifestBinding&)>& edit) {
+        Pack pack = test::compile_pack(graph_with_scene("{}"));
+        for (auto& p : pack.manifest.passes)
+            for (auto& b : p.bindings)
+                if (p.name == "shade" && b.name == "fg_final") edit(b);
+        try {
+            HeadlessRenderer r(test::shared_context(), pack, s, {});
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(refusal([](ManifestBinding&) {}), "accepted");
+    EXPECT_NE(refusal([](ManifestBinding& b) { b.format = "rgba16f"; })
+                  .find("binds final.left (rgba8) to 'fg_final', which its shader declares rgba16f: recompile"),
+              std::string::npos);
+    EXPECT_NE(refusal([](ManifestBinding& b) { b.format.clear(); }).find("compiled by an older fgc; recompile"),
+              std::string::npos);
 }

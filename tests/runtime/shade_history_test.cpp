@@ -44,8 +44,8 @@ double taken_share(HeadlessRenderer& r, const std::vector<float>& depth) {
     std::size_t hits = 0, taken = 0;
     for (std::size_t i = 0; i < depth.size(); ++i) {
         if (depth[i] < 0.0f) continue;
-        Imath::half age;
-        std::memcpy(&age, cache.data() + i * 8 + 6, 2);
+        Imath::half age;   // rgba32ui, seven halves (kept_shading.glsl): the age is the fourth word's low half
+        std::memcpy(&age, cache.data() + i * 16 + 12, 2);
         ++hits;
         taken += static_cast<float>(age) >= 1.0f;
     }

@@ -48,6 +48,7 @@ struct FgShading {
     vec3 albedo;
     float diffuse;   // the light's diffuse factor
     float ao;
+    FgSurface surface;   // the graph's outputs it came from
 };
 
 // Shades the hit p seen along rd with normal n (the graph's surface outputs, fake lighting, emission).
@@ -76,5 +77,5 @@ FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n)
 #ifdef FG_HAS_EMISSION
     color += s.emission;
 #endif
-    return FgShading(color, s.albedo, diffuse, ao);
+    return FgShading(color, s.albedo, diffuse, ao, s);
 }
