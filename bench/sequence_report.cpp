@@ -52,7 +52,7 @@ std::string csv_text(std::string s) {
 }  // namespace
 
 void SequenceRow::summarize() {
-    std::vector<double> ms, wrong, over, quality, evals, iterations;
+    std::vector<double> ms, wrong, over, over_march, quality, evals, iterations;
     rendered = dark = counted = 0;
     not_finite_worst = 0;
     std::vector<double> after;
@@ -66,6 +66,7 @@ void SequenceRow::summarize() {
         if (f.gpu_ms > 0.0) after.push_back(f.after_march_ms / f.gpu_ms);
         wrong.push_back(f.misclassified_pct);
         over.push_back(f.overstepped_pct);
+        over_march.push_back(f.overstepped_march_pct);
         quality.push_back(f.psnr);
         not_finite_worst = std::max(not_finite_worst, f.not_finite);
         if (f.evaluations_per_pixel >= 0.0) {
@@ -85,6 +86,8 @@ void SequenceRow::summarize() {
     misclassified_worst = largest(wrong);
     overstepped_mean = mean(over);
     overstepped_worst = largest(over);
+    overstepped_march_mean = mean(over_march);
+    overstepped_march_worst = largest(over_march);
     psnr_mean = mean(quality);
     psnr_worst = smallest(quality);
 }
@@ -132,7 +135,7 @@ void SequenceReport::write(const std::string& folder) const {
            "counted_frames,frame_ms_median,frame_ms_p99,frame_ms_worst,after_march_share,evals_per_px,iterations_per_px";
     for (const auto& g : groups) csv << ",lanes_" << g;
     csv << ",misclassified_pct_mean,misclassified_pct_worst,overstepped_pct_mean,overstepped_pct_worst,"
-           "not_finite_worst,"
+           "overstepped_march_pct_mean,overstepped_march_pct_worst,not_finite_worst,"
            "psnr_db_mean,psnr_db_worst,reuse_skipped_fraction,speedup_median_vs_naive,speedup_p99_vs_naive,"
            "speedup_median_vs_naive_lanes,speedup_p99_vs_naive_lanes,error\n";
     for (const auto& r : rows) {
@@ -144,24 +147,24 @@ void SequenceReport::write(const std::string& folder) const {
                            std::max(0.0, f.foveation), f.width, r.rendered, r.dark, r.counted, r.median_ms, r.p99_ms,
                            r.worst_ms, r.after_march_share, r.evaluations_per_pixel, r.iterations_per_pixel);
         for (const auto& g : groups) csv << "," << lane_cell(r, g);
-        csv << fmt::format(",{:.4f},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{}\n",
+        csv << fmt::format(",{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{}\n",
                            r.misclassified_mean, r.misclassified_worst, r.overstepped_mean, r.overstepped_worst,
-                           r.not_finite_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
+                           r.overstepped_march_mean, r.overstepped_march_worst, r.not_finite_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
                            ratio_cell(r.speedup_median_naive), ratio_cell(r.speedup_p99_naive),
                            ratio_cell(r.speedup_median_naive_lanes), ratio_cell(r.speedup_p99_naive_lanes),
                            r.error.empty() ? "" : csv_text(r.error));
     }
 
     std::ofstream frames_csv(fs::path(folder) / "sequence_frames.csv");
-    frames_csv << "scene,trace,setting,frame,dark,frame_ms,evals_per_px,misclassified_pct,overstepped_pct,psnr_db,"
-                  "sm_clock_mhz\n";
+    frames_csv << "scene,trace,setting,frame,dark,frame_ms,evals_per_px,misclassified_pct,overstepped_pct,"
+                  "overstepped_march_pct,psnr_db,sm_clock_mhz\n";
     for (const auto& r : rows)
         for (const auto& f : r.frames)
             frames_csv << fmt::format(
-                "{},{},{},{},{},{:.3f},{},{:.4f},{:.4f},{:.2f},{}\n", r.scene, r.trace, r.setting.name(), f.index,
+                "{},{},{},{},{},{:.3f},{},{:.4f},{:.4f},{:.4f},{:.2f},{}\n", r.scene, r.trace, r.setting.name(), f.index,
                 f.dark ? 1 : 0, f.gpu_ms,
                 f.evaluations_per_pixel >= 0.0 ? fmt::format("{:.3f}", f.evaluations_per_pixel) : "",
-                f.misclassified_pct, f.overstepped_pct, f.psnr,
+                f.misclassified_pct, f.overstepped_pct, f.overstepped_march_pct, f.psnr,
                 f.sm_clock_mhz >= 0.0 ? fmt::format("{:.0f}", f.sm_clock_mhz) : "");
 
     // Per scene, what the frame governor walks: `fgplay xr --trade-offs trade_offs_<scene>.json`.

@@ -18,6 +18,7 @@ struct SequenceFrame {
     double gpu_ms = 0.0;   // FrameStats.gpu_ms "frame" of the timed renderer
     double after_march_ms = 0.0;   // of it, the passes after the march: shade, post, fovea
     double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
+    double overstepped_march_pct = 0.0;   // of the oversteps, at pixels the eye marched (not foveation's fill)
     std::size_t not_finite = 0;
     double evaluations_per_pixel = -1.0;   // from the counting renderer; < 0 on frames it skipped
     double iterations_per_pixel = -1.0;    // fractal loop iterations, the same way
@@ -37,6 +38,7 @@ struct SequenceRow {
     double median_ms = 0.0, p99_ms = 0.0, worst_ms = 0.0, evaluations_per_pixel = 0.0, iterations_per_pixel = 0.0;
     double after_march_share = 0.0;   // median over frames of after_march_ms / gpu_ms
     double misclassified_mean = 0.0, misclassified_worst = 0.0, overstepped_mean = 0.0, overstepped_worst = 0.0;
+    double overstepped_march_mean = 0.0, overstepped_march_worst = 0.0;
     double psnr_mean = 0.0, psnr_worst = 0.0;
     std::size_t not_finite_worst = 0;
     int rendered = 0, dark = 0, counted = 0;

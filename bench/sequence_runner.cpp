@@ -118,13 +118,32 @@ struct SettingRenderers {
     }
 };
 
+// The pixels an eye sees (`seen`, empty for all) that it also marched itself (not foveation's fill).
+std::vector<std::uint8_t> seen_and_marched(const std::vector<std::uint8_t>& seen, const GpuFrame& frame, int view) {
+    std::vector<std::uint8_t> mask = marched_pixels(frame, view);
+    for (std::size_t i = 0; i < seen.size(); ++i) mask[i] &= seen[i];
+    return mask;
+}
+
 void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel_half_diagonal,
              const SettingRenderers& r, SequenceFrame& out) {
     DepthComparison left = compare_depths(frame.depth_left, ref.depth_left, pixel_half_diagonal, r.seen_left);
     DepthComparison right = compare_depths(frame.depth_right, ref.depth_right, pixel_half_diagonal, r.seen_right);
+    const double pixels = static_cast<double>(std::max<std::size_t>(1, left.pixels + right.pixels));
     out.misclassified_pct = 50.0 * (left.misclassified + right.misclassified);
-    out.overstepped_pct = 100.0 * static_cast<double>(left.overstepped + right.overstepped) /
-                          static_cast<double>(std::max<std::size_t>(1, left.pixels + right.pixels));
+    out.overstepped_pct = 100.0 * static_cast<double>(left.overstepped + right.overstepped) / pixels;
+    // The same oversteps, counted only where the march set the depth: foveation's fill copies a
+    // neighbour's, which can lie behind this pixel's surface whatever the march did.
+    const GpuFrame& uniforms = r.timed->executor().frame();
+    std::size_t marched_oversteps = left.overstepped + right.overstepped;
+    if (uniforms.fovea_radius > 0.0f) {
+        marched_oversteps =
+            compare_depths(frame.depth_left, ref.depth_left, pixel_half_diagonal,
+                           seen_and_marched(r.seen_left, uniforms, kLeftView)).overstepped +
+            compare_depths(frame.depth_right, ref.depth_right, pixel_half_diagonal,
+                           seen_and_marched(r.seen_right, uniforms, kRightView)).overstepped;
+    }
+    out.overstepped_march_pct = 100.0 * static_cast<double>(marched_oversteps) / pixels;
     out.not_finite = left.not_finite + right.not_finite;
     out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
 }

@@ -53,6 +53,8 @@ public:
     // The frame's uniforms; the executor adds the previous frame's eyes and whether its levels hold
     // for this one (cross-frame reuse).
     void set_frame(const GpuFrame& frame);
+    // The uniforms of the last frame set, as the shaders see them.
+    const GpuFrame& frame() const { return frame_data_; }
     // A changed scene setting (light, background...) forgets the shading history.
     void set_scene(const GpuScene& scene);
     // A parameter may change the distance: the previous frame's levels no longer hold.

@@ -1,6 +1,7 @@
 #include "lens_mask.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fg {
 
@@ -26,6 +27,26 @@ std::vector<std::uint8_t> visible_pixels(const LensEllipse& lens, std::uint32_t 
             visible[static_cast<std::size_t>(y) * width + x] = qu * qu + qv * qv > 1.0f ? 0 : 1;
         }
     return visible;
+}
+
+std::vector<std::uint8_t> marched_pixels(const GpuFrame& frame, int view) {
+    const std::uint32_t width = frame.eye_size.x, height = frame.eye_size.y;
+    std::vector<std::uint8_t> marched(static_cast<std::size_t>(width) * height, 1);
+    if (frame.fovea_radius <= 0.0f) return marched;
+    // fg_fovea_centre and fg_periphery (common.glsl), in single precision and the shader's order.
+    const GpuView& v = frame.views[view];
+    const float cx = (v.lens_radii.x > 0.0f ? v.lens_centre.x : 0.5f) * static_cast<float>(width);
+    const float cy = (v.lens_radii.x > 0.0f ? v.lens_centre.y : 0.5f) * static_cast<float>(height);
+    const float half = 0.5f * static_cast<float>(height), blend = std::max(frame.fovea_blend, 1e-6f);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            if (((x | y) & 1u) == 0) continue;
+            float dx = static_cast<float>(x) + 0.5f - cx, dy = static_cast<float>(y) + 0.5f - cy;
+            float r = std::sqrt(dx * dx + dy * dy) / half;
+            if (std::clamp((r - frame.fovea_radius) / blend, 0.0f, 1.0f) >= 1.0f)
+                marched[static_cast<std::size_t>(y) * width + x] = 0;
+        }
+    return marched;
 }
 
 }  // namespace fg

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "gpu_uniforms.h"
 #include "stereo_rig.h"
 
 namespace fg {
@@ -19,5 +20,10 @@ LensEllipse lens_ellipse(const View& view);
 
 // 1 where a pixel is visible through the lens (every pixel when `lens` has no radii).
 std::vector<std::uint8_t> visible_pixels(const LensEllipse& lens, std::uint32_t width, std::uint32_t height);
+
+// 1 where eye `view` of `frame` marches a pixel itself, 0 where fixed foveation's fill copies the
+// depth of its 2x2 block's even pixel (the odd pixels of the periphery: fovea.comp). Every pixel
+// without foveation. Lets the benchmark tell the march's errors from the fill's.
+std::vector<std::uint8_t> marched_pixels(const GpuFrame& frame, int view);
 
 }  // namespace fg

@@ -170,3 +170,38 @@ TEST_P(PixelBudget, foveation_keeps_the_fovea_exact_and_the_periphery_close_to_g
 
 INSTANTIATE_TEST_SUITE_P(EveryStereoMode, PixelBudget,
                          ::testing::Values(StereoMode::Naive, StereoMode::PerEye, StereoMode::Reproject), mode_name);
+
+// The sequence benchmark counts the march's oversteps apart from the fill's (marched_pixels, the
+// CPU's copy of fg_periphery): every visible pixel it calls filled holds its block's marched depth,
+// as the fovea pass copies it; the lens moves the fovea's centre, so the mask is on.
+class FoveationFill : public RuntimeTest {};
+
+TEST_F(FoveationFill, the_cpu_knows_which_pixels_take_their_depth_from_the_fill) {
+    FrameSettings fs;
+    fs.width = fs.height = kSize;
+    fs.lens_mask = true;
+    fs.foveation = 0.4;
+    HeadlessRenderer r(test::shared_context(), bulb(), fs, StereoSettings{kSize, kSize});
+    RenderedFrame f = r.render(kFilled, 0.0);
+    for (int view : {kLeftView, kRightView}) {
+        SCOPED_TRACE(view == kLeftView ? "left" : "right");
+        const View& v = view == kLeftView ? r.views().left : r.views().right;
+        const std::vector<std::uint8_t> seen = visible_pixels(lens_ellipse(v), kSize, kSize);
+        const std::vector<std::uint8_t> marched = marched_pixels(r.executor().frame(), view);
+        const std::vector<float>& depth = view == kLeftView ? f.depth_left : f.depth_right;
+        std::size_t filled = 0, odd_marched_unlike_block = 0;
+        for (std::uint32_t y = 0; y < kSize; ++y)
+            for (std::uint32_t x = 0; x < kSize; ++x) {
+                std::size_t i = y * kSize + x, block = (y & ~1u) * kSize + (x & ~1u);
+                if (!seen[i] || ((x | y) & 1u) == 0) continue;
+                if (!marched[i]) {
+                    ++filled;
+                    EXPECT_EQ(depth[i], depth[block]) << "pixel " << x << "," << y;
+                } else {
+                    odd_marched_unlike_block += depth[i] != depth[block];
+                }
+            }
+        EXPECT_GT(filled, kSize * kSize / 4) << "most of the periphery's odd pixels are filled";
+        EXPECT_GT(odd_marched_unlike_block, 100u) << "the fovea's odd pixels are marched, not copied";
+    }
+}
