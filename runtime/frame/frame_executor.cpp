@@ -165,9 +165,7 @@ void FrameExecutor::check_declarations() const {
                 throw std::runtime_error(fmt::format("pass {} binds {} to '{}', which its shader {}, but the pass does not "
                                                      "declare it: its barriers would be wrong",
                                                      pass.label, resource, b.name, problem));
-            const FrameImage* image = b.kind == "storage_image" ? graph_.find_image(resource) : nullptr;
-            if (!image && b.kind == "storage_image" && resource.ends_with(".previous"))
-                image = graph_.find_image(resource.substr(0, resource.size() - 9));
+            const FrameImage* image = b.kind == "storage_image" ? graph_.find_image(current(resource)) : nullptr;
             if (image && b.format.empty())
                 throw std::runtime_error(fmt::format("pass {}: the pack does not record its images' formats, so it was "
                                                      "compiled by an older fgc; recompile it from its graph with this fgc",
@@ -178,8 +176,7 @@ void FrameExecutor::check_declarations() const {
                                                      pass.label, resource, image_format_name(image->format), b.name, b.format));
         }
         for (const auto& r : pass.reads)
-            if (!graph_.find_image(r) && !graph_.find_buffer(r) && !(r.ends_with(".previous") &&
-                                                                       graph_.find_image(r.substr(0, r.size() - 9))))
+            if (!graph_.find_image(current(r)) && !graph_.find_buffer(r))
                 throw std::runtime_error(fmt::format("pass {} reads {}, which the frame graph does not have", pass.label, r));
     }
 }
@@ -207,8 +204,9 @@ void FrameExecutor::make_resources() {
 }
 
 vk::StorageImage* FrameExecutor::resolve_image(const std::string& name, std::uint64_t frame) const {
-    bool prev = name.ends_with(".previous");
-    auto it = images_.find(prev ? name.substr(0, name.size() - 9) : name);
+    const std::string image = current(name);
+    const bool prev = image != name;
+    auto it = images_.find(image);
     if (it == images_.end()) return nullptr;
     const auto& versions = it->second;
     if (versions.size() == 1) return prev ? nullptr : versions[0].get();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string_view>
 #include <fmt/format.h>
 #include <stdexcept>
 
@@ -46,6 +47,11 @@ std::uint32_t bytes_per_pixel(ImageFormat f) {
 }
 
 std::string previous(const std::string& image) { return image + ".previous"; }
+
+std::string current(const std::string& name) {
+    constexpr std::string_view kPrevious = ".previous";
+    return name.ends_with(kPrevious) ? name.substr(0, name.size() - kPrevious.size()) : name;
+}
 
 const char* view_name(int view) { return view == kLeftView ? "left" : view == kRightView ? "right" : "centre"; }
 

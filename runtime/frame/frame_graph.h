@@ -39,8 +39,10 @@ struct FrameImage {
     bool history = false;
 };
 
-// The name under which passes read a history image's previous frame.
+// The name under which passes read a history image's previous frame, and back: the image a name
+// stands for (itself, unless it is a previous frame's).
 std::string previous(const std::string& image);
+std::string current(const std::string& name);
 
 // A storage buffer the graph owns, e.g. a work queue; `reset` words are written at the start of
 // every frame.
