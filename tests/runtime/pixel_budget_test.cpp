@@ -49,16 +49,6 @@ std::uint32_t rgb(const Rgba8Image& image, std::size_t i) {
            image.pixels[4 * i + 2];
 }
 
-double psnr(const Rgba8Image& a, const Rgba8Image& b) {
-    double se = 0.0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        if (i % 4 == 3) continue;
-        double d = static_cast<double>(a.pixels[i]) - b.pixels[i];
-        se += d * d;
-    }
-    return se == 0.0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / (se / (0.75 * static_cast<double>(a.pixels.size()))));
-}
-
 // Where the fovea ends, in pixels from the image centre, for a foveation radius in half heights.
 double fovea_pixels(double radius) { return radius * 0.5 * kSize; }
 
@@ -150,7 +140,7 @@ TEST_P(PixelBudget, foveation_keeps_the_fovea_exact_and_the_periphery_close_to_g
     DepthComparison c_full = compare_depths(full.frame.depth_left, truth.depth, fov.views.pixel_half_diagonal);
     DepthComparison c_fov = compare_depths(fov.frame.depth_left, truth.depth, fov.views.pixel_half_diagonal);
     double saved = 1.0 - fov.frame.stats.evaluations_per_pixel / full.frame.stats.evaluations_per_pixel;
-    double image_psnr = psnr(fov.frame.left, full.frame.left);
+    double image_psnr = test::psnr(fov.frame.left, full.frame.left);
     RecordProperty("result", fmt::format("misclassified {:.2f}% (without foveation {:.2f}%), depth error median {:.2f} "
                                          "p95 {:.2f} cone radii (without {:.2f}, {:.2f}), {:.1f}% fewer evaluations, "
                                          "PSNR against the full image {:.1f} dB",

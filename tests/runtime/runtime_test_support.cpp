@@ -1,6 +1,7 @@
 #include "runtime_test_support.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -81,6 +82,18 @@ FramePass& pass_named(FrameGraph& g, const std::string& label) {
 
 const FramePass& pass_named(const FrameGraph& g, const std::string& label) {
     return pass_named(const_cast<FrameGraph&>(g), label);
+}
+
+double psnr(const Rgba8Image& a, const Rgba8Image& b) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        if (i % 4 == 3) continue;
+        double d = (static_cast<double>(a.pixels[i]) - b.pixels[i]) / 255.0;
+        sum += d * d;
+        ++n;
+    }
+    return sum == 0.0 ? 99.0 : 10.0 * std::log10(static_cast<double>(n) / sum);
 }
 
 }  // namespace fg::test

@@ -40,6 +40,9 @@ float atlas_cone_bound(const std::vector<std::byte>& atlas, std::uint32_t width,
 FramePass& pass_named(FrameGraph& g, const std::string& label);
 const FramePass& pass_named(const FrameGraph& g, const std::string& label);
 
+// PSNR of two images' RGB against 255; 99 dB where they are equal.
+double psnr(const Rgba8Image& a, const Rgba8Image& b);
+
 // One Vulkan context for the whole test program (pipeline creation is the slow part on lavapipe).
 vk::Context& shared_context();
 

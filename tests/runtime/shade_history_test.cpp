@@ -26,18 +26,6 @@ FrameSettings settings(std::uint32_t size, double history) {
     return fs;
 }
 
-double psnr(const Rgba8Image& a, const Rgba8Image& b) {
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        if (i % 4 == 3) continue;
-        double d = (static_cast<double>(a.pixels[i]) - b.pixels[i]) / 255.0;
-        sum += d * d;
-        ++n;
-    }
-    return sum == 0.0 ? 99.0 : 10.0 * std::log10(static_cast<double>(n) / sum);
-}
-
 // The share of an eye's hit pixels whose colour came from the frame before (age >= 1 in the cache).
 double taken_share(HeadlessRenderer& r, const std::vector<float>& depth) {
     auto cache = r.executor().download("shade_cache.left");
@@ -78,7 +66,7 @@ TEST_P(ShadeHistory, a_moving_head_keeps_the_picture_within_40_db_of_shading_eve
     for (int f = 0; f < kFrames; ++f) {
         RenderedFrame a = with.render(head_at(f, walk), 0.0), b = without.render(head_at(f, walk), 0.0);
         ASSERT_EQ(a.depth_left, b.depth_left) << "the march is the same with or without shading history";
-        worst = std::min({worst, psnr(a.left, b.left), psnr(a.right, b.right)});
+        worst = std::min({worst, test::psnr(a.left, b.left), test::psnr(a.right, b.right)});
         double share = taken_share(with, a.depth_left);
         if (f == 0) EXPECT_EQ(share, 0.0) << "the first frame has no history";
         taken += share / (kFrames - 1);

@@ -4,7 +4,7 @@
 // shading (the bound), and a good share of its pixels is reused. Real lavapipe, validation on.
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <fmt/format.h>
 
@@ -52,18 +52,10 @@ TEST_P(ShadingReuse, the_right_eye_reuses_the_left_eyes_shading_where_both_see_t
     EXPECT_EQ(own.left.pixels, reused.left.pixels) << "the left eye shades everything itself";
     EXPECT_EQ(own.depth_right, reused.depth_right) << "reuse changes colours only";
     std::size_t changed = 0;
-    double se = 0.0;
-    for (std::size_t i = 0; i < own.right.pixels.size(); i += 4) {
-        bool differs = false;
-        for (std::size_t c = 0; c < 3; ++c) {
-            double d = static_cast<double>(own.right.pixels[i + c]) - reused.right.pixels[i + c];
-            se += d * d;
-            differs |= d != 0.0;
-        }
-        changed += differs;
-    }
+    for (std::size_t i = 0; i < own.right.pixels.size(); i += 4)
+        changed += !std::equal(&own.right.pixels[i], &own.right.pixels[i + 3], &reused.right.pixels[i]);
     double pixels = static_cast<double>(kSize * kSize);
-    double psnr = 10.0 * std::log10(255.0 * 255.0 / (se / (3.0 * pixels)));
+    double psnr = test::psnr(own.right, reused.right);
     std::string figures = fmt::format("{}x{}: {:.1f} % of the right eye's pixels take the left eye's colour; PSNR {:.1f} dB",
                                       kSize, kSize, 100.0 * changed / pixels, psnr);
     std::printf("%s\n", figures.c_str());
@@ -87,13 +79,7 @@ TEST(ShadingReuseViewTerms, a_taken_shading_gets_the_terms_that_read_the_view_fr
     Scene scene{"", {0.0, 0.1, 1.25}, {0.0, 0.0, 0.0}, 1.0, 0.5};
     RenderedFrame own = render(pack, scene, 0.0);
     RenderedFrame reused = render(pack, scene, scene.tolerance);
-    double se = 0.0;
-    for (std::size_t i = 0; i < own.right.pixels.size(); i += 4)
-        for (std::size_t c = 0; c < 3; ++c) {
-            double d = static_cast<double>(own.right.pixels[i + c]) - reused.right.pixels[i + c];
-            se += d * d;
-        }
-    double psnr = 10.0 * std::log10(255.0 * 255.0 / (se / (3.0 * kSize * kSize)));
+    double psnr = test::psnr(own.right, reused.right);
     std::printf("a lit ball, %ux%u: PSNR %.1f dB against shading every pixel\n", kSize, kSize, psnr);
     EXPECT_GE(psnr, 40.0);
 }
