@@ -41,6 +41,12 @@ void SceneCodegen::output_defines(GlslWriter& w) const {
     }
 }
 
+namespace {
+// The surface's scalar lighting terms and their values when the graph leaves them unbound: those a
+// shade pass can recompute for another viewer (fg_scene_view_terms).
+constexpr std::pair<const char*, const char*> kScalarTerms[] = {{"ao", "1.0"}, {"sss", "0.0"}, {"rim", "0.0"}};
+}  // namespace
+
 bool SceneCodegen::reads_to_camera(const IrInput& root) const {
     auto to_camera = [](const IrInput& in) { return in.kind == IrInput::Kind::Implicit && in.implicit == ImplicitSource::ToCamera; };
     if (to_camera(root)) return true;
@@ -54,7 +60,7 @@ bool SceneCodegen::reads_to_camera(const IrInput& root) const {
 
 std::vector<const IrInput*> SceneCodegen::view_roots() const {
     std::vector<const IrInput*> roots;
-    for (const char* name : {"ao", "sss", "rim"}) {
+    for (const auto& [name, fallback] : kScalarTerms) {
         auto it = ir_.outputs.find(name);
         if (it != ir_.outputs.end() && reads_to_camera(it->second)) roots.push_back(&it->second);
     }
@@ -244,9 +250,7 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     w.line("    FgSurface s;", generated());
     w.line(fmt::format("    s.albedo = {};", field("albedo", "fg_scene.albedo.xyz")), generated());
     w.line(fmt::format("    s.diffuse = {};", field("diffuse", "0.0")), generated());
-    w.line(fmt::format("    s.ao = {};", field("ao", "1.0")), generated());
-    w.line(fmt::format("    s.sss = {};", field("sss", "0.0")), generated());
-    w.line(fmt::format("    s.rim = {};", field("rim", "0.0")), generated());
+    for (const auto& [name, fallback] : kScalarTerms) w.line(fmt::format("    s.{} = {};", name, field(name, fallback)), generated());
     w.line(fmt::format("    s.emission = {};", field("emission", "vec3(0.0)")), generated());
     w.line("    return s;", generated());
     w.line("}", generated());
@@ -264,9 +268,7 @@ void SceneCodegen::view_terms_function(GlslWriter& w, const std::function<std::s
     shading_function_head(w, "fg_scene_view_terms");
     function_body(w, view_roots(), true);
     w.line("    FgSurface s = FgSurface(vec3(0.0), 0.0, 1.0, 0.0, 0.0, vec3(0.0));", generated());
-    w.line(fmt::format("    s.ao = {};", view("ao", "1.0")), generated());
-    w.line(fmt::format("    s.sss = {};", view("sss", "0.0")), generated());
-    w.line(fmt::format("    s.rim = {};", view("rim", "0.0")), generated());
+    for (const auto& [name, fallback] : kScalarTerms) w.line(fmt::format("    s.{} = {};", name, view(name, fallback)), generated());
     w.line("    return s;", generated());
     w.line("}", generated());
     w.blank();
