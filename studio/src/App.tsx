@@ -220,22 +220,25 @@ function Studio() {
     [commit, flow],
   );
 
-  // A wire the compiler would refuse is not drawn: its reason is shown instead.
+  // A wire the compiler would refuse is not drawn: its reason is shown instead. The check is a round
+  // trip to the server, so the wire is bound into the document as it is when the answer comes (an
+  // edit made meanwhile is kept), and a check that fails says so rather than drop the wire silently.
   const onConnect = useCallback(
     async (c: Connection) => {
       if (!c.source || !c.target || !c.sourceHandle || !c.targetHandle || c.source === OUTPUT_NODE_ID) return;
-      const current = snapshot.current.doc;
-      const candidate = setBinding(current, c.target, c.targetHandle, `${c.source}.${c.sourceHandle}`);
-      const check = await api.validate(compiledDoc(candidate));
-      const reason = check.diagnostics.find((d) => {
-        const place = placeOf(candidate, d.pointer, d.node);
-        return d.severity === "error" && place?.node === c.target && (place.port === c.targetHandle || !place.port);
-      });
-      if (reason) {
-        say(`wire refused: ${reason.message}`);
-        return;
+      const bind = (doc: GraphDoc) => setBinding(doc, c.target, c.targetHandle!, `${c.source}.${c.sourceHandle}`);
+      try {
+        const candidate = bind(snapshot.current.doc);
+        const check = await api.validate(compiledDoc(candidate));
+        const reason = check.diagnostics.find((d) => {
+          const place = placeOf(candidate, d.pointer, d.node);
+          return d.severity === "error" && place?.node === c.target && (place.port === c.targetHandle || !place.port);
+        });
+        if (reason) say(`wire refused: ${reason.message}`);
+        else commit(bind(snapshot.current.doc));
+      } catch (e) {
+        say(`wire not made: it could not be checked (${e})`);
       }
-      commit(candidate);
     },
     [commit, say],
   );

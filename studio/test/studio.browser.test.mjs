@@ -20,6 +20,14 @@ const folder = path.join(work, "folder");
 const shots = process.env.FG_STUDIO_SCREENSHOTS || path.join(work, "screenshots");
 let server, browser, page, base;
 
+// What the page is doing, for a failed step's message: the requests it sent and what it printed.
+const pageLog = [];
+const note = (line) => pageLog.push(`${new Date().toISOString().slice(11, 23)} ${line}`);
+
+// Requests the page has sent and not yet had answered, but for its long poll of the compile state.
+const inFlight = new Set();
+const busy = () => [...inFlight].filter((r) => !r.url().includes("/api/state")).length;
+
 before(async () => {
   fs.rmSync(work, { recursive: true, force: true });
   fs.mkdirSync(folder, { recursive: true });
@@ -48,6 +56,16 @@ before(async () => {
   page = await browser.newPage();
   await page.setViewport({ width: 1600, height: 900 });
   page.on("pageerror", (e) => console.error("page error:", e.message));
+  page.on("console", (m) => note(`console ${m.type()}: ${m.text()}`));
+  page.on("request", (r) => inFlight.add(r));
+  page.on("requestfinished", (r) => {
+    inFlight.delete(r);
+    note(`${r.method()} ${r.url().replace(/^\w+:\/\/[^/]+/, "")} ${r.response()?.status()}`);
+  });
+  page.on("requestfailed", (r) => {
+    inFlight.delete(r);
+    note(`${r.method()} ${r.url().replace(/^\w+:\/\/[^/]+/, "")} failed: ${r.failure()?.errorText}`);
+  });
 });
 
 after(async () => {
@@ -95,8 +113,10 @@ async function waitForPreview(differentFrom, timeout = 120000) {
 }
 
 async function idle() {
-  // Compiles done and the newest frame shown.
+  // Compiles done, the newest frame and every node's preview shown: a preview arriving re-renders
+  // its node, and on a loaded machine each takes seconds (a new shader for every subgraph).
   await page.waitForFunction(() => !document.querySelector('[data-testid="status"]')?.textContent?.includes("compiling"), { timeout: 120000 });
+  for (const start = Date.now(); busy() > 0 && Date.now() - start < 120000; ) await new Promise((r) => setTimeout(r, 100));
   await new Promise((r) => setTimeout(r, 800));
 }
 
@@ -114,26 +134,49 @@ async function settledBox(selector) {
   throw new Error(`${selector} kept moving`);
 }
 
+// The element a point lands on, described briefly (a handle by its node and port).
+async function under(x, y) {
+  return page.evaluate((px, py) => {
+    const e = document.elementFromPoint(px, py);
+    if (!e) return "nothing";
+    if (e.classList.contains("react-flow__handle")) return `handle ${e.dataset.nodeid}.${e.dataset.handleid}`;
+    return `${e.tagName.toLowerCase()}.${[...e.classList].join(".")}`;
+  }, x, y);
+}
+
+// A drag from one handle to another as a person makes it: press, move, hold over the target until
+// React Flow has drawn its connection line there, release. Reports what each end landed on and
+// whether the line was drawn and judged valid, so a failed wire says which part failed.
 async function drag(from, to) {
   const a = await settledBox(from);
   const b = await settledBox(to);
-  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
+  const [ax, ay, bx, by] = [a.x + a.width / 2, a.y + a.height / 2, b.x + b.width / 2, b.y + b.height / 2];
+  const report = { from: await under(ax, ay), to: await under(bx, by) };
+  await page.mouse.move(ax, ay);
   await page.mouse.down();
-  await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2, { steps: 8 });
-  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
+  await page.mouse.move((ax + bx) / 2, (ay + by) / 2, { steps: 8 });
+  await page.mouse.move(bx, by, { steps: 8 });
+  const line = await page
+    .waitForFunction(() => document.querySelector(".react-flow__connection")?.getAttribute("class"), { timeout: 5000 })
+    .then((h) => h.jsonValue())
+    .catch(() => "no connection line");
+  report.line = line;
   await page.mouse.up();
+  return report;
 }
 
 // A wire drawn by dragging; on a loaded machine a late re-layout can still move a handle under the
-// mouse, so a drag that left no wire is made once more when the page is idle.
+// mouse, so a drag that left no wire is made again when the page is idle (three drags in all).
 async function wire(fromNode, fromPort, toNode, toPort) {
   const edge = `.react-flow__edge[data-testid="rf__edge-${fromNode}.${fromPort}->${toNode}.${toPort}"]`;
-  for (let attempt = 0; attempt < 2; ++attempt) {
-    if (attempt > 0) await idle();
-    await drag(handle(fromNode, "source", fromPort), handle(toNode, "target", toPort));
-    if (await page.waitForSelector(edge, { timeout: 10000 }).catch(() => null)) return;
+  const reports = [];
+  for (let attempt = 0; attempt < 3; ++attempt) {
+    await idle();
+    reports.push(await drag(handle(fromNode, "source", fromPort), handle(toNode, "target", toPort)));
+    if (await page.waitForSelector(edge, { timeout: 15000 }).catch(() => null)) return;
   }
-  throw new Error(`no wire ${fromNode}.${fromPort} -> ${toNode}.${toPort} after two drags`);
+  await page.screenshot({ path: path.join(shots, "wire_failed.png") });
+  throw new Error(`no wire ${fromNode}.${fromPort} -> ${toNode}.${toPort} after three drags: ${JSON.stringify(reports)}\npage:\n${pageLog.slice(-40).join("\n")}`);
 }
 
 const handle = (node, side, port) => `[data-testid="node-${node}"] .react-flow__handle.${side}[data-handleid="${port}"]`;
@@ -194,17 +237,18 @@ test("the studio edits a graph with a live preview", async (t) => {
 
   await t.test("a wire between incompatible types is refused with the compiler's reason", async () => {
     // A node preview arriving mid-drag (slow shader compiles on a loaded machine) moves the handles
-    // under the mouse: if no answer comes, one more drag once the page is idle again.
+    // under the mouse: if no answer comes, another drag once the page is idle again.
     let toast = null;
-    for (let attempt = 0; attempt < 2 && !toast; ++attempt) {
+    const reports = [];
+    for (let attempt = 0; attempt < 3 && !toast; ++attempt) {
       if (attempt > 0) await idle();
-      await drag(handle("bulb", "source", "trap"), handle("round", "target", "radius"));
+      reports.push(await drag(handle("bulb", "source", "trap"), handle("round", "target", "radius")));
       toast = await page
         .waitForSelector('[data-testid="toast"]', { timeout: 20000 })
         .then((e) => e.evaluate((x) => x.textContent))
         .catch(() => null);
     }
-    assert.ok(toast, "no answer to the refused wire after two drags");
+    assert.ok(toast, `no answer to the refused wire after three drags: ${JSON.stringify(reports)}\npage:\n${pageLog.slice(-40).join("\n")}`);
     assert.match(toast, /wire refused: .*type mismatch/);
   });
 
