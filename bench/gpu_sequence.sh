@@ -1,28 +1,40 @@
 #!/usr/bin/env bash
-# The sequence benchmark on a lent GPU machine, inside a fixed budget of seconds. Here, first:
+# The benchmarks on a lent GPU machine, inside a fixed budget of seconds. Here, first:
 #   bash ../shared/tools/gpu-bundle.sh build/gpu build/runtime/fgplay && strip build/gpu/fgplay
 # then on the device, from the repository root, with build/gpu carried:
-#   bash bench/gpu_sequence.sh "$OUT" SECONDS [NAME:SIZE:SCENE[:TRACE,...]]...
+#   bash bench/gpu_sequence.sh "$OUT" SECONDS RUN...
+# where each RUN is one of
+#   NAME:SIZE:SCENE[:TRACE,...]          head traces (fgplay bench --sequence) over graphs/gallery/SCENE.json
+#   frame:NAME:SIZE:SCENE[:VIEW,...]     single frames of every setting (fgplay bench), e.g. the filled
+#                                        view at a headset's size: frame:bulb1920:1920:mandelbulb:filled
 # Each run's folder comes back as NAME.tar.gz (plots are drawn here afterwards: the GPU machine's
 # Python may lack matplotlib); log.txt says what ran, how long, and which runs the budget cut.
+# Without build/gpu (a machine with its own Vulkan) it runs the fgplay on PATH.
 set -u
 out=$1 budget=$2
 shift 2
 log=$out/log.txt
-source build/gpu/gpu-env.sh build/gpu
+[ -f build/gpu/gpu-env.sh ] && source build/gpu/gpu-env.sh build/gpu
 {
     date -u
     nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm,temperature.gpu --format=csv 2>&1
 } >>"$log"
 for run in "$@"; do
-    IFS=: read -r name size scene traces <<<"$run"
+    kind=sequence
+    if [[ $run == frame:* ]]; then kind=frame run=${run#frame:}; fi
+    IFS=: read -r name size scene subset <<<"$run"
     left=$((budget - SECONDS))
     if ((left < 20)); then
         echo "$name: not run, $left s of the budget left" | tee -a "$log"
         continue
     fi
-    args=(bench --sequence --no-plots --size "$size" --scene "graphs/gallery/$scene.json" --out "/tmp/$name")
-    [ -n "$traces" ] && args+=(--trace ${traces//,/ })
+    if [ "$kind" = sequence ]; then
+        args=(bench --sequence --no-plots --size "$size" --scene "graphs/gallery/$scene.json" --out "/tmp/$name")
+        [ -n "$subset" ] && args+=(--trace ${subset//,/ })
+    else
+        args=(bench --graph "graphs/gallery/$scene.json" --no-plots --size "$size" --out "/tmp/$name")
+        for view in ${subset//,/ }; do args+=(--view "$view"); done
+    fi
     began=$SECONDS
     timeout "$left" fgplay "${args[@]}" >"/tmp/$name.log" 2>&1
     rc=$?
