@@ -10,9 +10,11 @@ import {
   applyEdgeChanges,
   applyNodeChanges,
   useReactFlow,
+  useUpdateNodeInternals,
   type Connection,
   type Edge,
   type EdgeChange,
+  type FinalConnectionState,
   type NodeChange,
 } from "@xyflow/react";
 import { api, type CalibrationStatus, type CompileState, type Diagnostic, type FrameInfo, type GraphDoc, type GraphNodeDoc, type Json, type NodeDef, type ProbeInfo } from "./api";
@@ -243,6 +245,19 @@ function Studio() {
     [commit, say],
   );
 
+  // A wire dropped on an input's row (its name, its type, its field) goes to that input: the
+  // handle itself is a few pixels wide at the zoom a whole graph is seen at.
+  const onConnectEnd = useCallback(
+    (event: MouseEvent | TouchEvent, state: FinalConnectionState) => {
+      if (state.isValid || !state.fromNode || state.fromHandle?.type !== "source" || !state.fromHandle.id) return;
+      const at = "changedTouches" in event ? event.changedTouches[0] : event;
+      const row = document.elementFromPoint(at.clientX, at.clientY)?.closest<HTMLElement>("[data-port-node]");
+      if (!row?.dataset.portNode || !row.dataset.portName) return;
+      onConnect({ source: state.fromNode.id, sourceHandle: state.fromHandle.id, target: row.dataset.portNode, targetHandle: row.dataset.portName });
+    },
+    [onConnect],
+  );
+
   const deleteSelection = useCallback(
     (nodeIds: string[], edgeList: Edge[]) => {
       let next = snapshot.current.doc;
@@ -311,6 +326,17 @@ function Studio() {
       });
     });
   }, [doc, positions, diagnostics, previews, catalogMap, onBinding, onCode]);
+
+  // React Flow starts a wire from the bounds of the handles it measured in each node. On a loaded
+  // machine it sometimes holds a node's measured size but no handle bounds after the page loads,
+  // and measures again only when the size changes, so every drag from that node started no wire
+  // (stop 31's CI: all of the gallery graph's nodes, in 4 of 30 runs here under load). Such a node
+  // is measured again.
+  const updateNodeInternals = useUpdateNodeInternals();
+  useEffect(() => {
+    const lost = nodes.filter((n) => n.measured && !flow.getInternalNode(n.id)?.internals.handleBounds).map((n) => n.id);
+    if (lost.length) updateNodeInternals(lost);
+  }, [nodes, flow, updateNodeInternals]);
 
   const onNodesChange = useCallback((changes: NodeChange<GraphFlowNode>[]) => {
     setNodes((nds) => applyNodeChanges(changes, nds));
@@ -442,6 +468,7 @@ function Studio() {
           onNodesChange={onNodesChange}
           onEdgesChange={onEdgesChange}
           onConnect={onConnect}
+          onConnectEnd={onConnectEnd}
           onDelete={({ nodes: gone, edges: cut }) => deleteSelection(gone.map((n) => n.id), cut)}
           onNodeDragStop={(_, __, moved) => {
             const next = { ...snapshot.current.positions };

@@ -118,7 +118,7 @@ function GraphNodeView({ id: flowId, data, selected }: NodeProps<GraphFlowNode>)
           </div>
         ))}
         {data.inputs.map((p) => (
-          <div className={`port-row input${portErrors.has(p.name) ? " port-error" : ""}`} key={`i-${p.name}`} title={portErrors.get(p.name) ?? `${p.type}: ${p.doc}`} data-testid={`port-${id}-${p.name}`}>
+          <div className={`port-row input${portErrors.has(p.name) ? " port-error" : ""}`} key={`i-${p.name}`} title={portErrors.get(p.name) ?? `${p.type}: ${p.doc}`} data-testid={`port-${id}-${p.name}`} data-port-node={id} data-port-name={p.name}>
             <Handle type="target" position={Position.Left} id={p.name} style={{ background: typeColour(p.type) }} />
             <span className="port-name">{p.name}</span>
             <span className="port-type" style={{ color: typeColour(p.type) }}>{p.type}</span>

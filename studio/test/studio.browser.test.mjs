@@ -152,6 +152,16 @@ async function drag(from, to) {
   const b = await settledBox(to);
   const [ax, ay, bx, by] = [a.x + a.width / 2, a.y + a.height / 2, b.x + b.width / 2, b.y + b.height / 2];
   const report = { from: await under(ax, ay), to: await under(bx, by) };
+  // What the page receives of the drag (where the press and the release land, how many moves).
+  await page.evaluate(() => {
+    const seen = (window.__fgSeen = { down: null, moves: 0, up: null });
+    const name = (e) => (e.target?.dataset?.handleid ? `handle ${e.target.dataset.nodeid}.${e.target.dataset.handleid}` : `${e.target?.tagName}.${e.target?.className}`);
+    const done = new AbortController();
+    const options = { capture: true, signal: done.signal };
+    document.addEventListener("mousedown", (e) => (seen.down = name(e)), options);
+    document.addEventListener("mousemove", () => ++seen.moves, options);
+    document.addEventListener("mouseup", (e) => ((seen.up = name(e)), done.abort()), options);
+  });
   await page.mouse.move(ax, ay);
   await page.mouse.down();
   await page.mouse.move((ax + bx) / 2, (ay + by) / 2, { steps: 8 });
@@ -162,6 +172,7 @@ async function drag(from, to) {
     .catch(() => "no connection line");
   report.line = line;
   await page.mouse.up();
+  report.events = await page.evaluate(() => window.__fgSeen);
   return report;
 }
 
@@ -242,7 +253,8 @@ test("the studio edits a graph with a live preview", async (t) => {
     const reports = [];
     for (let attempt = 0; attempt < 3 && !toast; ++attempt) {
       if (attempt > 0) await idle();
-      reports.push(await drag(handle("bulb", "source", "trap"), handle("round", "target", "radius")));
+      // Dropped on the input's name, not its handle: the whole row takes a wire.
+      reports.push(await drag(handle("bulb", "source", "trap"), '[data-testid="port-round-radius"] .port-name'));
       toast = await page
         .waitForSelector('[data-testid="toast"]', { timeout: 20000 })
         .then((e) => e.evaluate((x) => x.textContent))
