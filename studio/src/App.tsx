@@ -330,7 +330,7 @@ function Studio() {
   // React Flow starts a wire from the bounds of the handles it measured in each node. On a loaded
   // machine it sometimes holds a node's measured size but no handle bounds after the page loads,
   // and measures again only when the size changes, so every drag from that node started no wire
-  // (stop 31's CI: all of the gallery graph's nodes, in 4 of 30 runs here under load). Such a node
+  // (stop 31's CI: all of the gallery graph's nodes, in 5 of 28 runs here under load). Such a node
   // is measured again.
   const updateNodeInternals = useUpdateNodeInternals();
   useEffect(() => {
