@@ -17,7 +17,7 @@ enum class TileRegion {
     Fovea,         // full resolution: the pixels short of the periphery (fg_periphery < 1)
     FoveaLevel1,   // conemarch level 1's cells over those pixels
     Periphery,     // the periphery's grid (one invocation per 2x2 block): even pixels with fg_periphery >= 1
-    Fill,          // full resolution: the pixels the fovea pass fills or blends (fg_periphery > 0)
+    Fill,          // 2x2 blocks holding pixels the fovea pass fills or blends (fg_periphery > 0)
     Whole,         // full resolution, every pixel: an eye without foveation
 };
 

@@ -137,7 +137,7 @@ TEST(DispatchTiles, every_pixel_a_pass_takes_inside_the_lens_lies_in_a_listed_ti
                     float s = periphery(f, 0, p);
                     if (c.fovea > 0.0f && s < 1.0f) missing += !listed_in(fovea, p);
                     if (c.fovea > 0.0f && s >= 1.0f && x % 2 == 0 && y % 2 == 0) missing += !listed_in(outer, p / 2);
-                    if (c.fovea > 0.0f && s > 0.0f && (x & y & 1)) missing += !listed_in(fill, p);
+                    if (c.fovea > 0.0f && s > 0.0f && ((x | y) & 1)) missing += !listed_in(fill, p / 2);
                 }
                 // A level-1 cell marches unless its block is outside the lens grown by the block.
                 if (c.fovea > 0.0f && x % 2 == 0 && y % 2 == 0 && periphery(f, 0, p) < 1.0f &&
@@ -193,7 +193,7 @@ TEST(DispatchTiles, every_pixel_a_pass_takes_lies_in_a_listed_tile_and_few_other
                 } else if (x % 2 == 0 && y % 2 == 0) {
                     missing += !outer(p / 2);
                 }
-                if (s > 0.0f && (x & y & 1)) missing += !fill(p);
+                if (s > 0.0f && ((x | y) & 1)) missing += !fill(p / 2);   // the fill's cells are 2x2 blocks
             }
         EXPECT_EQ(missing, 0u);
         // Tight: a listed fovea tile holds a pixel within 2 pixels of the fovea's edge; without a

@@ -11,33 +11,31 @@
 // surfaces seen around it, which is what a compositor's reprojection and the accuracy counts take
 // depth to mean (the block's own pixel alone put the background behind a foreground edge).
 // Odd pixels of the periphery outside the lens get their miss and black here. Only odd pixels are
-// written and only even ones read, so the pass can work in place.
+// written and only even ones read (besides each odd pixel's own), so the pass can work in place.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform image2D fg_depth;
 layout(set = 0, binding = 4, rgba8) uniform image2D fg_final;
 layout(push_constant) uniform FgFoveaPush { FoveaPush pc; };
 
-// The nearest hit among the marched corners lo, hi of a filled pixel's block that its colour blends
-// (bilinear weight f; a corner of zero weight is not seen there); FG_MISS where none of them hits.
-float fg_nearest_hit(ivec2 lo, ivec2 hi, vec2 f)
+// The nearest hit among a filled pixel's marched corners that its colour blends (bilinear weight f;
+// a corner of zero weight is not seen there); FG_MISS where none of them hits.
+float fg_nearest_hit(vec4 corners, vec2 f)
 {
-    float corners[4] = float[4](imageLoad(fg_depth, lo).x,
-                                f.x > 0.0 ? imageLoad(fg_depth, ivec2(hi.x, lo.y)).x : FG_MISS,
-                                f.y > 0.0 ? imageLoad(fg_depth, ivec2(lo.x, hi.y)).x : FG_MISS,
-                                f.x > 0.0 && f.y > 0.0 ? imageLoad(fg_depth, hi).x : FG_MISS);
+    if (f.x <= 0.0) corners.yw = vec2(FG_MISS);
+    if (f.y <= 0.0) corners.zw = vec2(FG_MISS);
     float nearest = FG_MISS;
     for (int i = 0; i < 4; ++i)
         if (corners[i] >= 0.0 && (nearest < 0.0 || corners[i] < nearest)) nearest = corners[i];
     return nearest;
 }
 
-void main()
+// Fills the odd pixel lo + offset of a block from its marched corners (colours c: lo, (hi.x, lo.y),
+// (lo.x, hi.y), hi; their depths d).
+void fg_fill(ivec2 lo, ivec2 offset, vec4 c[4], vec4 d)
 {
-    ivec2 pixel = fg_dispatch_cell(1, ivec2(gl_GlobalInvocationID.xy));
-    ivec2 size = ivec2(fg_frame.eye_size);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
-    if (((pixel.x | pixel.y) & 1) == 0) return;
+    ivec2 pixel = lo + offset;
+    if (any(greaterThanEqual(pixel, ivec2(fg_frame.eye_size)))) return;
     float s = fg_periphery(pc.view, pixel);
     if (s <= 0.0) return;
     if (fg_outside_lens(pc.view, pixel)) {
@@ -49,15 +47,32 @@ void main()
         }
         return;
     }
-    ivec2 lo = pixel & ~1;
-    ivec2 hi = min(lo + 2, (size - 1) & ~1);
-    vec2 f = vec2(pixel - lo) * 0.5;
-    vec4 top = mix(imageLoad(fg_final, lo), imageLoad(fg_final, ivec2(hi.x, lo.y)), f.x);
-    vec4 bottom = mix(imageLoad(fg_final, ivec2(lo.x, hi.y)), imageLoad(fg_final, hi), f.x);
-    vec4 color = mix(top, bottom, f.y);
+    vec2 f = vec2(offset) * 0.5;
+    vec4 color = mix(mix(c[0], c[1], f.x), mix(c[2], c[3], f.x), f.y);
     if (s < 1.0)
         color = mix(imageLoad(fg_final, pixel), color, s);
     else
-        imageStore(fg_depth, pixel, vec4(fg_nearest_hit(lo, hi, f)));
+        imageStore(fg_depth, pixel, vec4(fg_nearest_hit(d, f)));
     imageStore(fg_final, pixel, color);
+}
+
+// One invocation fills a 2x2 block's three odd pixels: its four corners are loaded once for all
+// three (an invocation per pixel loaded them three times, and on llvmpipe the even pixel's lane ran
+// the whole shader under a mask).
+void main()
+{
+    ivec2 lo = fg_dispatch_cell(2, ivec2(gl_GlobalInvocationID.xy));
+    ivec2 size = ivec2(fg_frame.eye_size);
+    if (lo.x >= size.x || lo.y >= size.y) return;
+    ivec2 hi = min(lo + 2, (size - 1) & ~1);
+    ivec2 corner[4] = ivec2[4](lo, ivec2(hi.x, lo.y), ivec2(lo.x, hi.y), hi);
+    vec4 c[4];
+    vec4 d;
+    for (int i = 0; i < 4; ++i) {
+        c[i] = imageLoad(fg_final, corner[i]);
+        d[i] = imageLoad(fg_depth, corner[i]).x;
+    }
+    fg_fill(lo, ivec2(1, 0), c, d);
+    fg_fill(lo, ivec2(0, 1), c, d);
+    fg_fill(lo, ivec2(1, 1), c, d);
 }
