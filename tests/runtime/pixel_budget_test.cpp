@@ -166,52 +166,63 @@ INSTANTIATE_TEST_SUITE_P(EveryStereoMode, PixelBudget,
 // CPU's copy of fg_periphery): every visible pixel it calls filled holds the nearest hit among the
 // marched pixels its colour blends, as the fovea pass fills it; the lens moves the fovea's centre,
 // so the mask is on.
-class FoveationFill : public RuntimeTest {};
+// At the image's size and at odd sizes, where the last column's or row's blocks lack their odd
+// pixels and their corners clamp to the last even ones.
+class FoveationFill : public RuntimeTest, public ::testing::WithParamInterface<std::pair<std::uint32_t, std::uint32_t>> {};
 
-// The fovea pass's fill of the odd pixel (x, y): the nearest hit among the even corners of its
-// block that its bilinear colour gives weight to, a miss where none of them hits.
-float nearest_marched_hit(const std::vector<float>& depth, std::uint32_t x, std::uint32_t y) {
-    std::uint32_t last = (kSize - 1) & ~1u;
-    std::uint32_t x0 = x & ~1u, y0 = y & ~1u, x1 = std::min(x0 + 2, last), y1 = std::min(y0 + 2, last);
+// The fovea pass's fill of the odd pixel (x, y) of a w x h eye: the nearest hit among the even
+// corners of its block that its bilinear colour gives weight to, a miss where none of them hits.
+float nearest_marched_hit(const std::vector<float>& depth, std::uint32_t w, std::uint32_t h, std::uint32_t x, std::uint32_t y) {
+    std::uint32_t x0 = x & ~1u, y0 = y & ~1u, x1 = std::min(x0 + 2, (w - 1) & ~1u), y1 = std::min(y0 + 2, (h - 1) & ~1u);
     float nearest = -1.0f;
     for (std::uint32_t cy : {y0, y1})
         for (std::uint32_t cx : {x0, x1}) {
             bool weighted = (cx == x0 || (x & 1u)) && (cy == y0 || (y & 1u));
-            float d = depth[cy * kSize + cx];
+            float d = depth[cy * w + cx];
             if (weighted && d >= 0.0f && (nearest < 0.0f || d < nearest)) nearest = d;
         }
     return nearest;
 }
 
-TEST_F(FoveationFill, the_cpu_knows_which_pixels_take_their_depth_from_the_fill) {
+TEST_P(FoveationFill, the_cpu_knows_which_pixels_take_their_depth_from_the_fill) {
+    const auto [w, h] = GetParam();
     FrameSettings fs;
-    fs.width = fs.height = kSize;
+    fs.width = w;
+    fs.height = h;
     fs.lens_mask = true;
     fs.foveation = 0.4;
-    HeadlessRenderer r(test::shared_context(), bulb(), fs, StereoSettings{kSize, kSize});
+    HeadlessRenderer r(test::shared_context(), bulb(), fs, StereoSettings{w, h});
     RenderedFrame f = r.render(kFilled, 0.0);
+    // Silhouettes and the fovea's odd pixels scale with the image.
+    const std::size_t some = std::size_t(100) * w * h / (kSize * kSize);
     for (int view : {kLeftView, kRightView}) {
         SCOPED_TRACE(view == kLeftView ? "left" : "right");
         const View& v = view == kLeftView ? r.views().left : r.views().right;
-        const std::vector<std::uint8_t> seen = visible_pixels(lens_ellipse(v), kSize, kSize);
+        const std::vector<std::uint8_t> seen = visible_pixels(lens_ellipse(v), w, h);
         const std::vector<std::uint8_t> marched = marched_pixels(r.executor().frame(), view);
         const std::vector<float>& depth = view == kLeftView ? f.depth_left : f.depth_right;
-        std::size_t filled = 0, nearer_than_block = 0, odd_marched_unlike_fill = 0;
-        for (std::uint32_t y = 0; y < kSize; ++y)
-            for (std::uint32_t x = 0; x < kSize; ++x) {
-                std::size_t i = y * kSize + x, block = (y & ~1u) * kSize + (x & ~1u);
+        std::size_t filled = 0, nearer_than_block = 0, odd_marched_unlike_fill = 0, edge_filled = 0;
+        for (std::uint32_t y = 0; y < h; ++y)
+            for (std::uint32_t x = 0; x < w; ++x) {
+                std::size_t i = std::size_t(y) * w + x, block = std::size_t(y & ~1u) * w + (x & ~1u);
                 if (!seen[i] || ((x | y) & 1u) == 0) continue;
-                float fill = nearest_marched_hit(depth, x, y);
+                float fill = nearest_marched_hit(depth, w, h, x, y);
                 if (!marched[i]) {
                     ++filled;
+                    edge_filled += x + 1 == w || y + 1 == h;
                     EXPECT_EQ(depth[i], fill) << "pixel " << x << "," << y;
                     nearer_than_block += depth[i] >= 0.0f && (depth[block] < 0.0f || depth[i] < depth[block]);
                 } else {
                     odd_marched_unlike_fill += depth[i] != fill;
                 }
             }
-        EXPECT_GT(filled, kSize * kSize / 4) << "most of the periphery's odd pixels are filled";
-        EXPECT_GT(nearer_than_block, 100u) << "silhouettes: the fill takes a nearer hit than the block's own";
-        EXPECT_GT(odd_marched_unlike_fill, 100u) << "the fovea's odd pixels are marched, not filled";
+        EXPECT_GT(filled, std::size_t(w) * h / 4) << "most of the periphery's odd pixels are filled";
+        EXPECT_GT(nearer_than_block, some) << "silhouettes: the fill takes a nearer hit than the block's own";
+        EXPECT_GT(odd_marched_unlike_fill, some) << "the fovea's odd pixels are marched, not filled";
+        if (w % 2 == 1 || h % 2 == 1) EXPECT_GT(edge_filled, 0u) << "the last column or row has filled pixels";
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Sizes, FoveationFill,
+                         ::testing::Values(std::pair<std::uint32_t, std::uint32_t>{kSize, kSize}, std::pair<std::uint32_t, std::uint32_t>{97, 75}),
+                         [](const auto& info) { return fmt::format("{}x{}", info.param.first, info.param.second); });
