@@ -85,8 +85,13 @@ inline constexpr DispatchConstant kSpecPeripheryParent{
     64, "FG_SPEC_PERIPHERY_PARENT", "the conemarch level a foveated periphery's pixel starts from (-1: level 1)"};
 inline constexpr DispatchConstant kSpecTileList{
     65, "FG_SPEC_TILE_LIST", "1: the pass dispatches the 8x8 tiles its FgTiles buffer lists, not a grid over its image"};
-inline constexpr std::array<DispatchConstant, 5> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution,
-                                                                    kSpecPeripheryParent, kSpecTileList};
+// Whether the frames may hold a lens or a fovea at all: without them, every pass drops the per-pixel
+// tests for them (a quarter of the shade pass's own cost on lavapipe, which runs the test's code
+// whether or not a frame has a lens).
+inline constexpr DispatchConstant kSpecLens{66, "FG_SPEC_LENS", "0: no frame has a lens mask (fg_outside_lens is false), 1: frames may"};
+inline constexpr DispatchConstant kSpecFoveated{67, "FG_SPEC_FOVEATED", "0: the frame graph is not foveated (fg_periphery is 0), 1: it is"};
+inline constexpr std::array<DispatchConstant, 7> kDispatchConstants{kSpecProjection, kSpecCentreView, kSpecFullResolution,
+                                                                    kSpecPeripheryParent, kSpecTileList, kSpecLens, kSpecFoveated};
 static_assert(kGlobalKnobs.back().id < kSpecProjection.id, "global knob ids would run into the dispatch constants'");
 
 inline bool is_dispatch_constant(std::uint32_t id) {

@@ -126,6 +126,8 @@ void FrameExecutor::make_programs(const Pack& pack) {
         auto spec = specialization_for(manifest_, *mp, graph_.settings.knobs, graph_.settings.count_evaluations);
         for (std::uint32_t id : mp->dispatch_constants) {
             if (id == kSpecProjection.id) spec.set(id, static_cast<std::int32_t>(graph_.settings.projection));
+            if (id == kSpecLens.id) spec.set(id, graph_.settings.lens_mask || graph_.settings.headset_lens ? 1 : 0);
+            if (id == kSpecFoveated.id) spec.set(id, graph_.settings.foveation > 0.0 ? 1 : 0);
             if (auto it = pass.specialize.find(id); it != pass.specialize.end()) spec.set(id, it->second);
         }
         prog.pipeline = std::make_unique<vk::ComputePipeline>(ctx_, pack.spirv.at(mp->name),
@@ -273,6 +275,13 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
         throw std::logic_error(fmt::format("a frame in projection {} for pipelines made for projection {}: build the "
                                            "executor for the projection it renders",
                                            frame.projection, static_cast<int>(graph_.settings.projection)));
+    // ... and for whether frames hold a lens or a fovea at all (kSpecLens, kSpecFoveated): one they
+    // were made without would be ignored.
+    const bool lens = frame.views[FG_VIEW_LEFT].lens_radii.x > 0.0f || frame.views[FG_VIEW_RIGHT].lens_radii.x > 0.0f;
+    if (lens && !graph_.settings.lens_mask && !graph_.settings.headset_lens)
+        throw std::logic_error("a frame with a lens for pipelines made without one: set FrameSettings::lens_mask or headset_lens");
+    if (frame.fovea_radius > 0.0f && graph_.settings.foveation <= 0.0)
+        throw std::logic_error("a foveated frame for a frame graph built without foveation");
     frame_data_ = frame;
     frame_data_.previous[0] = previous_views_[0];
     frame_data_.previous[1] = previous_views_[1];

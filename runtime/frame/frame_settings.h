@@ -31,6 +31,9 @@ struct FrameSettings {
     // shades one pixel in four beyond the fovea. Foveation < 0 takes the scene's foveation block
     // (off without one), 0 is off, > 0 is the fovea radius in half image heights.
     bool lens_mask = false;
+    // Frames may carry a lens the user did not ask for: an OpenXR runtime's visibility mask, which
+    // the player puts into each frame's views (so the passes keep their lens tests).
+    bool headset_lens = false;
     double foveation = -1.0;
     double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
     // Each pass of an eye dispatches only the 8x8 tiles that hold its pixels (the fovea's, the

@@ -96,6 +96,7 @@ public:
         frame_.height = base_height_;
         governor_ = std::make_unique<FrameGovernor>(o.ladder.empty() ? governor_ladder(pack.manifest) : o.ladder);
         frame_.stereo = o.stereo;
+        frame_.headset_lens = instance_.has_visibility_mask();   // update_lens_masks puts it into the frames
         frame_.cone_levels = o.cone_levels;
         frame_.knobs = o.knobs;
         if (o.governor) apply(governor_->current());

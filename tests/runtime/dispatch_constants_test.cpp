@@ -1,5 +1,6 @@
 // Dispatch constants (common/spec_constants.h) make one pipeline per case a pass runs: the
-// conemarch's coarse levels and its level 0, the centre view and the eyes, each projection. They
+// conemarch's coarse levels and its level 0, the centre view and the eyes, each projection, frames
+// with or without a lens and a fovea. They
 // only drop code a dispatch never runs: frames are bit-identical to those of a pack whose manifest
 // lists none (as an older fgc wrote it), whose shaders read the same values from their push
 // constants and the frame's uniforms.
@@ -73,4 +74,42 @@ TEST_F(DispatchConstants, a_frame_in_another_projection_than_the_pipelines_is_re
     GpuFrame frame{};
     frame.projection = static_cast<std::uint32_t>(Projection::Ods);
     EXPECT_THROW(executor.set_frame(frame), std::logic_error);
+}
+
+namespace {
+
+// An eye's final image, rendered by an executor for `graph` from frames made with `frame`'s settings.
+std::vector<std::byte> final_left(const Pack& pack, const FrameSettings& graph, const FrameSettings& frame) {
+    StereoSettings stereo;
+    stereo.width = graph.width;
+    stereo.height = graph.height;
+    StereoViews views = make_stereo_views(look_at({0.0, 0.55, 1.45}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), Fov{-1.05, 0.8, -0.95, 0.7},
+                                          Fov{-0.8, 1.05, -0.95, 0.7}, stereo);
+    FrameExecutor executor(test::shared_context(), pack, FrameGraph::build(pack.manifest, graph, views.centre.width, views.centre.height));
+    executor.set_frame(make_gpu_frame(views, frame, 0.0, 1.0, 0));
+    executor.run();
+    return executor.download("final.left");
+}
+
+}  // namespace
+
+TEST_F(DispatchConstants, pipelines_without_a_lens_or_fovea_refuse_frames_with_one_and_a_headsets_lens_keeps_its_test) {
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    FrameSettings plain;
+    plain.width = plain.height = 48;
+    plain.foveation = 0.0;
+    FrameSettings lens = plain;
+    lens.lens_mask = true;
+    // An OpenXR runtime's visibility mask reaches the frames without the user's lens mask: the
+    // passes keep their lens test (FG_SPEC_LENS 1), so the frame is the lens mask's.
+    FrameSettings headset = plain;
+    headset.headset_lens = true;
+    const std::vector<std::byte> masked = final_left(pack, lens, lens);
+    EXPECT_EQ(final_left(pack, headset, lens), masked);
+    EXPECT_NE(final_left(pack, plain, plain), masked) << "the lens hides pixels";
+    // Pipelines made without a lens (or a fovea) would ignore one: such a frame is refused.
+    EXPECT_THROW(final_left(pack, plain, lens), std::logic_error);
+    FrameSettings foveated = plain;
+    foveated.foveation = 0.5;
+    EXPECT_THROW(final_left(pack, plain, foveated), std::logic_error);
 }

@@ -160,6 +160,7 @@ ivec2 fg_invocation_cell()
 // footprint, so a coarse level skips a block only if every child pixel skips too.
 bool fg_outside_lens(int view, vec2 uv, vec2 margin)
 {
+    if (FG_SPEC_LENS == 0) return false;
     GpuView v = fg_frame.views[view];
     if (v.lens_radii.x <= 0.0) return false;
     vec2 q = (uv - v.lens_centre) / (v.lens_radii + margin);
@@ -174,6 +175,7 @@ bool fg_outside_lens(int view, ivec2 pixel)
 // The centre eye of stereo reprojection is never foveated.
 bool fg_foveated(int view)
 {
+    if (FG_SPEC_FOVEATED == 0) return false;
     return fg_frame.fovea_radius > 0.0 && view != FG_VIEW_CENTRE;
 }
 
