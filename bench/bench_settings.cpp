@@ -85,6 +85,12 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     knob("overrelax", {1.2, 1.5});
     knob("tail_after", {8, 16});
     knob("persistent_lanes", {1});
+    // How full a subgroup stays before its idle lanes refill: a GPU's lever (32 or 64 lanes).
+    for (double burst : {0.5, 0.75, 1.0}) {
+        FrameSettings f = def;
+        f.knobs = {{"persistent_lanes", 1}, {"lane_burst", burst}};
+        add("lane_burst", fmt::format("persistent_lanes=1 lane_burst={}", number(burst)), f);
+    }
     {
         // The second baseline: naive sphere tracing with persistent lanes.
         FrameSettings f = naive;

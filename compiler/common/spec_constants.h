@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 18> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 19> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -61,6 +61,9 @@ inline constexpr std::array<GlobalKnob, 18> kGlobalKnobs{{
     {18, "shade_history", "FG_SHADE_HISTORY", ValueType::Float, 0.0, 0.0, 8.0,
      "an eye takes the previous frame's shading where it hits the same point within this many cone radii "
      "(a static scene without rim or SSS; terms that read the view are recomputed); 0 is off"},
+    {19, "lane_burst", "FG_LANE_BURST", ValueType::Float, 0.875, 0.01, 1.0,
+     "persistent lanes march on while this share of a subgroup's lanes has a ray, then refill the idle ones "
+     "(lower refills less often; a GPU's wider subgroups may want another share than lavapipe's 8 lanes)"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -10,9 +10,7 @@
 
 layout(set = 0, binding = 13, std430) buffer FgLaneQueue { uint next[]; } fg_lane_queue;
 
-const float FG_BURST_SHARE = 0.875;
-
-// Whether a burst of marching goes on: while at least FG_BURST_SHARE of the subgroup's lanes (or
+// Whether a burst of marching goes on: while at least FG_LANE_BURST (a knob) of the subgroup's lanes (or
 // all of those still working) have a ray. Lanes are refilled between bursts, all at once, rather
 // than each as its ray ends: SIMD hardware that runs both sides of a branch under a mask (as
 // llvmpipe does) would otherwise pay for a ray's setup and its stores in every step, and on GPUs it
@@ -21,7 +19,7 @@ bool fg_lanes_burst(bool marching)
 {
     uint marching_lanes = subgroupBallotBitCount(subgroupBallot(marching));
     uint lanes = subgroupBallotBitCount(subgroupBallot(true));
-    uint share = max(1u, uint(ceil(float(gl_SubgroupSize) * FG_BURST_SHARE)));
+    uint share = max(1u, uint(ceil(float(gl_SubgroupSize) * FG_LANE_BURST)));
     return marching_lanes > 0u && marching_lanes >= min(lanes, share);
 }
 
