@@ -280,8 +280,10 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     const bool lens = frame.views[FG_VIEW_LEFT].lens_radii.x > 0.0f || frame.views[FG_VIEW_RIGHT].lens_radii.x > 0.0f;
     if (lens && !graph_.settings.lens_mask && !graph_.settings.headset_lens)
         throw std::logic_error("a frame with a lens for pipelines made without one: set FrameSettings::lens_mask or headset_lens");
-    if (frame.fovea_radius > 0.0f && graph_.settings.foveation <= 0.0)
-        throw std::logic_error("a foveated frame for a frame graph built without foveation");
+    if ((frame.fovea_radius > 0.0f) != (graph_.settings.foveation > 0.0))
+        throw std::logic_error(frame.fovea_radius > 0.0f ? "a foveated frame for a frame graph built without foveation"
+                                                         : "a frame without foveation for a foveated frame graph (make the "
+                                                           "frame from the graph's settings: they resolve the scene's foveation)");
     frame_data_ = frame;
     frame_data_.previous[0] = previous_views_[0];
     frame_data_.previous[1] = previous_views_[1];
