@@ -194,9 +194,9 @@ int view(const ViewOptions& o) {
 
             stereo.world_scale = viewer.world_scale;
             StereoViews views = make_stereo_views(head, fov_of(scene), fov_of(scene), stereo);
-            FrameSettings this_frame = frame;
-            this_frame.camera_relative = playing.executor->graph().settings.camera_relative;   // a double pack
-            playing.executor->set_frame(make_gpu_frame(views, this_frame, frames / 60.0, viewer.world_scale,
+            // The frame graph's settings: the viewer's with what the pack decides filled in (a double
+            // pack's relative origins, the scene's foveation where the viewer says "as the scene says").
+            playing.executor->set_frame(make_gpu_frame(views, playing.executor->graph().settings, frames / 60.0, viewer.world_scale,
                                                        static_cast<std::uint32_t>(frames)));
             playing.executor->set_scene(viewer.scene);
             FrameStats stats = playing.executor->run();

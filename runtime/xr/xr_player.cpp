@@ -298,13 +298,9 @@ private:
         }
         if (masks_dirty_) update_lens_masks(sv);
         if (first_time_ == 0) first_time_ = time;
-        FrameSettings this_frame = frame_;
-        // Set from the pack by the frame graph: a double pack's relative origins, and the scene's
-        // foveation where the settings say "as the scene says" (-1).
-        this_frame.camera_relative = executor_->graph().settings.camera_relative;
-        this_frame.foveation = executor_->graph().settings.foveation;
-        this_frame.foveation_blend = executor_->graph().settings.foveation_blend;
-        GpuFrame gpu = make_gpu_frame(sv, this_frame, static_cast<double>(time - first_time_) * 1e-9, viewer.world_scale,
+        // The frame graph's settings are the player's with what the pack decides filled in (a double
+        // pack's relative origins, the scene's foveation where the player says "as the scene says").
+        GpuFrame gpu = make_gpu_frame(sv, executor_->graph().settings, static_cast<double>(time - first_time_) * 1e-9, viewer.world_scale,
                                       static_cast<std::uint32_t>(stats_.frames));
         // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
         // pixels outside it are never marched.

@@ -44,6 +44,20 @@ if(CASE STREQUAL "governor")
   fg_test_passed()
   return()
 endif()
+if(CASE STREQUAL "foveated")
+  # The pack's scene has a foveation block and the user says nothing: its frames carry the fovea
+  # the frame graph was built with (a frame without it would leave the periphery unmarched).
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                          ${XVFB_RUN} -a -s "-screen 0 320x240x24"
+                          ${FGPLAY} view ${PACK} --frames 4 --size 48x48 --validation
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "Vulkan validation: 0 errors")
+    message(FATAL_ERROR "fgplay view failed (${rc})")
+  endif()
+  fg_test_passed()
+  return()
+endif()
 if(CASE STREQUAL "flight")
   # Autopilot straight ahead at 30 times the normal speed: the probes must stop it at the surface,
   # a head radius (0.05) away.
