@@ -19,7 +19,6 @@ struct Grid {
 
 Grid region_grid(std::uint32_t width, std::uint32_t height, TileRegion region) {
     if (region == TileRegion::Fovea || region == TileRegion::Whole) return {width, height, 1, false};
-    if (region == TileRegion::Fill) return {(width + 1) / 2, (height + 1) / 2, 2, false};
     return {(width + 1) / 2, (height + 1) / 2, 2, region == TileRegion::Periphery};
 }
 

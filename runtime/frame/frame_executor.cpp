@@ -126,7 +126,7 @@ void FrameExecutor::make_programs(const Pack& pack) {
         auto spec = specialization_for(manifest_, *mp, graph_.settings.knobs, graph_.settings.count_evaluations);
         for (std::uint32_t id : mp->dispatch_constants) {
             if (id == kSpecProjection.id) spec.set(id, static_cast<std::int32_t>(graph_.settings.projection));
-            if (id == kSpecLens.id) spec.set(id, graph_.settings.lens_mask || graph_.settings.headset_lens ? 1 : 0);
+            if (id == kSpecLens.id) spec.set(id, graph_.settings.frames_may_hold_lens() ? 1 : 0);
             if (id == kSpecFoveated.id) spec.set(id, graph_.settings.foveation > 0.0 ? 1 : 0);
             if (auto it = pass.specialize.find(id); it != pass.specialize.end()) spec.set(id, it->second);
         }
@@ -278,7 +278,7 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     // ... and for whether frames hold a lens or a fovea at all (kSpecLens, kSpecFoveated): one they
     // were made without would be ignored.
     const bool lens = frame.views[FG_VIEW_LEFT].lens_radii.x > 0.0f || frame.views[FG_VIEW_RIGHT].lens_radii.x > 0.0f;
-    if (lens && !graph_.settings.lens_mask && !graph_.settings.headset_lens)
+    if (lens && !graph_.settings.frames_may_hold_lens())
         throw std::logic_error("a frame with a lens for pipelines made without one: set FrameSettings::lens_mask or headset_lens");
     if ((frame.fovea_radius > 0.0f) != (graph_.settings.foveation > 0.0))
         throw std::logic_error(frame.fovea_radius > 0.0f ? "a foveated frame for a frame graph built without foveation"

@@ -34,6 +34,7 @@ struct FrameSettings {
     // Frames may carry a lens the user did not ask for: an OpenXR runtime's visibility mask, which
     // the player puts into each frame's views (so the passes keep their lens tests).
     bool headset_lens = false;
+    bool frames_may_hold_lens() const { return lens_mask || headset_lens; }
     double foveation = -1.0;
     double foveation_blend = 0.15;             // band over which fovea and periphery blend (same unit)
     // Each pass of an eye dispatches only the 8x8 tiles that hold its pixels (the fovea's, the

@@ -1,9 +1,8 @@
 // Dispatch constants (common/spec_constants.h) make one pipeline per case a pass runs: the
 // conemarch's coarse levels and its level 0, the centre view and the eyes, each projection, frames
-// with or without a lens and a fovea. They
-// only drop code a dispatch never runs: frames are bit-identical to those of a pack whose manifest
-// lists none (as an older fgc wrote it), whose shaders read the same values from their push
-// constants and the frame's uniforms.
+// with or without a lens and a fovea. They only drop code a dispatch never runs: frames are
+// bit-identical to those of a pack whose manifest lists none (as an older fgc wrote it), whose
+// shaders read the same values from their push constants and the frame's uniforms.
 #include <gtest/gtest.h>
 
 #include "common/spec_constants.h"

@@ -1,7 +1,7 @@
 // Persistent lanes change which lane marches a pixel, never what the pixel gets: frames are
 // bit-identical with and without, in naive and per-eye marching, with and without the lens mask
-// and foveation, at any burst share. And they keep the lanes busy: level 0's lane efficiency (busy lane-iterations over
-// all, from subgroup ballots in the counting frame) rises in the filled view.
+// and foveation, at any burst share. And they keep the lanes busy: level 0's lane efficiency (busy
+// lane-iterations over all, from subgroup ballots in the counting frame) rises in the filled view.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
