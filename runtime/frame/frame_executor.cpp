@@ -411,14 +411,26 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
     }
     vk::transfer_to_compute_barrier(cmd);
     if (timer) timer->begin(cmd, "frame");
+    // One interval per run of passes with the same timer label, not one per pass: on lavapipe every
+    // timestamp flushes and wakes the rasteriser's threads, and two around each of a foveated per-eye
+    // frame's 18 passes kept its two compute threads from working side by side (docs/accuracy.md,
+    // "Timestamps on lavapipe").
+    auto timed = [&](std::size_t i) -> const std::string& {
+        const FramePass& pass = graph_.passes()[i];
+        return graph_.settings.time_each_pass ? pass.label : pass.timer;
+    };
+    const std::string* open = nullptr;   // the label of the interval running
     for (std::size_t batch = 0; batch < batches_.size(); ++batch) {
         if (batch > 0) vk::memory_barrier(cmd, kPassAccess, kPassAccess);
         for (std::size_t i : batches_[batch]) {
             const auto& pass = graph_.passes()[i];
             const Program& prog = *pass_programs_[i];
             VkDescriptorSet set = sets_[i][frames_run_ % 2];
-            const std::string& timed = graph_.settings.time_each_pass ? pass.label : pass.timer;
-            if (timer) timer->begin(cmd, timed);
+            if (timer && (!open || *open != timed(i))) {
+                if (open) timer->end(cmd, *open);
+                open = &timed(i);
+                timer->begin(cmd, *open);
+            }
             if (!pass.tile_list.empty()) {
                 const auto& tiles = tile_lists_[pass.tile_list].tiles;
                 if (!tiles.empty()) {
@@ -431,9 +443,9 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
             } else {
                 prog.pipeline->dispatch_indirect(cmd, set, buffers_.at(pass.indirect)->handle(), 0, pass.push);
             }
-            if (timer) timer->end(cmd, timed);
         }
     }
+    if (open) timer->end(cmd, *open);
     if (timer) timer->end(cmd, "frame");
     vk::compute_to_host_barrier(cmd);
 }
