@@ -294,6 +294,16 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     update_tile_lists();
 }
 
+// The frame set already (or none yet) must not read the previous frame's levels or shading. Not
+// through set_frame: before the first frame the uniforms hold no frame to check.
+void FrameExecutor::forget_history() {
+    history_valid_ = false;
+    frame_data_.reuse = 0u;
+    frame_data_.shade_history = 0u;
+    std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
+    frame_->flush();
+}
+
 void FrameExecutor::update_tile_lists() {
     for (const auto& b : graph_.buffers()) {
         if (!b.tiles) continue;
@@ -324,10 +334,7 @@ void FrameExecutor::set_scene(const GpuScene& scene) {
     // Shading history holds colours lit by the old light and background; the fade comes after it.
     GpuScene unfaded = scene;
     unfaded.fade = scene_data_.fade;
-    if (graph_.shade_history && std::memcmp(&unfaded, &scene_data_, sizeof scene) != 0) {
-        history_valid_ = false;
-        set_frame(frame_data_);
-    }
+    if (graph_.shade_history && std::memcmp(&unfaded, &scene_data_, sizeof scene) != 0) forget_history();
     scene_data_ = scene;
     std::memcpy(scene_->data(), &scene, sizeof scene);
     scene_->flush();
@@ -336,8 +343,7 @@ void FrameExecutor::set_scene(const GpuScene& scene) {
 bool FrameExecutor::set_param(const std::string& name, const Constant& value) {
     const auto* p = manifest_.find_param(name);
     if (!p) return false;
-    history_valid_ = false;
-    if (frame_data_.reuse || frame_data_.shade_history) set_frame(frame_data_);
+    forget_history();
     for (int i = 0; i < component_count(p->type); ++i) {
         std::byte* at = params_bytes_.data() + p->offset + 4 * static_cast<std::size_t>(i);
         double v = value.v[static_cast<std::size_t>(i)];

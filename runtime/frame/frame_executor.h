@@ -117,6 +117,7 @@ private:
     };
     std::uint64_t frames_to_fill_ = 1;
     void update_tile_lists();
+    void forget_history();
     std::map<std::string, TileList> tile_lists_;   // by buffer name
     std::unique_ptr<vk::Buffer> no_tiles_;         // bound where a pass dispatches no tiles
 };

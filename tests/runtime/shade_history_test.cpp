@@ -103,6 +103,24 @@ TEST_F(ShadeHistoryScope, shading_history_is_forgotten_when_the_light_or_a_param
     EXPECT_EQ(with.render(head, 0.0).left.pixels, without.render(head, 0.0).left.pixels);
 }
 
+TEST_F(ShadeHistoryScope, a_foveated_graph_takes_a_new_scene_before_its_first_frame) {
+    // The benchmark and the players set the scene first. Forgetting the history must not check a
+    // frame that was never set (the executor refused it as "a frame without foveation").
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/mandelbulb.json"));
+    FrameSettings fs = settings(48, 0.5);
+    fs.lens_mask = true;
+    fs.foveation = 0.4;
+    HeadlessRenderer with(test::shared_context(), pack, fs, {});
+    fs.knobs["shade_history"] = 0.0;
+    HeadlessRenderer without(test::shared_context(), pack, fs, {});
+    GpuScene scene = make_gpu_scene(pack.manifest.scene);
+    scene.light_dir = glm::vec4(glm::normalize(glm::vec3(-0.6f, 0.7f, 0.3f)), 0.0f);
+    ASSERT_NO_THROW(with.executor().set_scene(scene));
+    without.executor().set_scene(scene);
+    const HeadPose head = head_at(0, false);
+    EXPECT_EQ(with.render(head, 0.0).left.pixels, without.render(head, 0.0).left.pixels);
+}
+
 TEST_F(ShadeHistoryScope, a_scene_with_view_dependent_shading_never_takes_shading_from_the_frame_before) {
     // The rim light depends on the direction the surface is seen from.
     Pack pack = test::compile_pack(R"({"format": "fractograph-graph", "version": 1, "name": "rim ball",
