@@ -1,7 +1,7 @@
 # `fgplay bench --sequence --quick` as CI runs it: a row for every trace and setting with finite
 # figures, the tables and plots beside them, the governor's trade-offs, and per-eye conemarch no
 # more than 0.5 percentage points of misclassified pixels worse than naive sphere tracing on the
-# same trace.
+# same trace. Then every setting of a full run, masked ones included, for two frames.
 include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 cmake_policy(SET CMP0007 NEW)   # empty CSV cells (lanes not counted yet) keep their place in a list
 file(REMOVE_RECURSE ${WORK})
@@ -112,6 +112,33 @@ foreach(trace ${traces})
                           "${wrong_${naive}}: more than 0.5 percentage points worse")
     endif()
   endforeach()
+endforeach()
+
+# --quick runs the methods on all pixels only: every setting of a full run, the masked ones
+# included, must render too (the masked shading history once refused its first frame): the three
+# gallery scenes, one trace, two frames at 16x16.
+execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --trace look_around --out ${WORK}/every_setting
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fgplay bench --sequence over every setting failed: ${out}${err}")
+endif()
+file(STRINGS ${WORK}/every_setting/sequence.csv every_lines)
+list(POP_FRONT every_lines)
+list(LENGTH every_lines n)
+math(EXPR expected_every "3 * 2 * ${setting_count}")
+if(NOT n EQUAL expected_every)
+  message(FATAL_ERROR "a run over every setting has ${n} rows, expected ${expected_every} (3 scenes, each method masked "
+                      "and not):\n${out}")
+endif()
+foreach(line ${every_lines})
+  string(REPLACE "," ";" f "${line}")
+  list(GET f 0 scene)
+  list(GET f ${setting_at} setting)
+  list(GET f ${ms_at} ms)
+  list(GET f ${error_at} error)
+  if(NOT error STREQUAL "" OR NOT ms GREATER 0)
+    message(FATAL_ERROR "${scene} / ${setting} rendered no frame (${ms} ms): ${error}")
+  endif()
 endforeach()
 
 # The frame governor's ladder measured on the traces (`fgplay xr --trade-offs`): a front, and the rows behind it.
