@@ -36,8 +36,8 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_flag("--describe", r.describe, "print the frame graph: passes, images, sizes");
     render->add_flag("--time-passes", r.time_passes,
                      "GPU time of each pass instead of each pass group, with counting off, after an untimed warm-up frame "
-                     "(on a CPU device a timestamp around every pass slows the frame: compare its total with the "
-                     "groups' only)");
+                     "(on a CPU device a timestamp around every pass slows the frame: take frame totals from fgplay "
+                     "bench)");
     render->add_flag("--depth", r.depth, "also write 16-bit depth PNGs");
     render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
     render->add_option("--device", r.device, "Vulkan device: index or name substring");
