@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The benchmarks on a lent GPU machine, inside a fixed budget of seconds. Here, first:
 #   bash ../shared/tools/gpu-bundle.sh build/gpu build/runtime/fgplay && strip build/gpu/fgplay
-# then on the device, from the repository root, with build/gpu carried:
+#   tar cJf build/gpu.tar.xz -C build gpu
+# (the bundle, 28 MB, and the tracked tree, 52 MB, overflow the device's 64 MiB; xz makes it 8 MB)
+# then on the device, from the repository root, with build/gpu.tar.xz carried:
 #   bash bench/gpu_sequence.sh "$OUT" SECONDS RUN...
 # where each RUN is one of
 #   NAME:SIZE:SCENE[:TRACE,...]          head traces (fgplay bench --sequence) over graphs/gallery/SCENE.json
@@ -14,6 +16,10 @@ set -u
 out=$1 budget=$2
 shift 2
 log=$out/log.txt
+if [ ! -d build/gpu ] && [ -f build/gpu.tar.xz ]; then
+    tar xJf build/gpu.tar.xz -C build ||
+        python3 -c 'import tarfile; tarfile.open("build/gpu.tar.xz").extractall("build")'
+fi
 [ -f build/gpu/gpu-env.sh ] && source build/gpu/gpu-env.sh build/gpu
 {
     date -u
@@ -41,5 +47,14 @@ for run in "$@"; do
     echo "$name: fgplay ${args[*]}: exit $rc after $((SECONDS - began)) s" | tee -a "$log"
     cp "/tmp/$name.log" "/tmp/$name/" 2>/dev/null || { mkdir -p "/tmp/$name" && cp "/tmp/$name.log" "/tmp/$name/"; }
     tar czf "$out/$name.tar.gz" -C /tmp "$name"
+    # A file over 16 MiB does not come back from the device: at a headset's size the sweep's
+    # images would sink its CSV (the Mandelbox's reference alone is 21 MB at 1920²), so drop
+    # the settings' images, then the reference's.
+    for keep in "reference_*" "no image"; do
+        (($(stat -c %s "$out/$name.tar.gz") > 15000000)) || break
+        find "/tmp/$name" -name '*.png' ! -name "$keep" -delete
+        tar czf "$out/$name.tar.gz" -C /tmp "$name"
+        echo "$name: archived without its images but $keep (too large to come back)" | tee -a "$log"
+    done
     tail -n 4 "/tmp/$name.log"
 done
