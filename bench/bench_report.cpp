@@ -1,5 +1,6 @@
 #include "bench_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frame/trade_off_front.h"
+#include "frame_measures.h"
 #include "plot_script.h"
 
 namespace fg::bench {
@@ -53,14 +55,15 @@ void BenchReport::write(const std::string& folder) const {
     for (const auto& g : groups)
         if (g != "frame") csv << "," << g << "_ms";
     csv << ",evals_per_px,misclassified_pct,depth_err_median,depth_err_p95,psnr_db,not_finite,overstepped,"
-           "time_speedup,eval_speedup,error\n";
+           "time_speedup,eval_speedup,sm_clock_mhz,error\n";
     for (const auto& r : rows) {
         csv << fmt::format("{},\"{}\",{},{},{},{:.3f}", r.view, r.setting, r.group, r.stereo, r.size, r.frame_ms());
         for (const auto& g : groups)
             if (g != "frame") csv << fmt::format(",{:.3f}", r.pass_ms.count(g) ? r.pass_ms.at(g) : 0.0);
-        csv << fmt::format(",{:.3f},{:.4f},{:.3f},{:.3f},{:.2f},{},{},{:.3f},{:.3f},\"{}\"\n", r.evaluations_per_pixel,
+        csv << fmt::format(",{:.3f},{:.4f},{:.3f},{:.3f},{:.2f},{},{},{:.3f},{:.3f},{},\"{}\"\n", r.evaluations_per_pixel,
                            r.misclassified_pct, r.depth_median, r.depth_p95, r.psnr, r.not_finite, r.overstepped,
-                           r.time_speedup, r.evaluation_speedup, r.error);
+                           r.time_speedup, r.evaluation_speedup, r.sm_clock_mhz >= 0 ? std::to_string(r.sm_clock_mhz) : "",
+                           r.error);
     }
     // Markdown: a table per view.
     std::ofstream md(fs::path(folder) / "results.md");
@@ -69,6 +72,13 @@ void BenchReport::write(const std::string& folder) const {
                       "0.05, 2000 steps); depth errors in units of the pixel's cone radius. Speed-ups are against the "
                       "naive per-eye tracer of the same view, measured in the same run.\n\n",
                       scene, device, size, size, frames);
+    std::vector<double> clocks;
+    for (const auto& r : rows)
+        if (r.sm_clock_mhz >= 0) clocks.push_back(r.sm_clock_mhz);
+    if (!clocks.empty())
+        md << fmt::format("Shader clock just after each setting's timed frames (NVML): median {:.0f} MHz, lowest {:.0f} "
+                          "MHz, of the GPU's {} MHz.\n\n",
+                          median(clocks), *std::min_element(clocks.begin(), clocks.end()), max_sm_mhz);
     std::vector<std::string> views;
     for (const auto& r : rows)
         if (std::find(views.begin(), views.end(), r.view) == views.end()) views.push_back(r.view);
@@ -124,6 +134,7 @@ void BenchReport::write(const std::string& folder) const {
                              {"depth_p95", r.depth_p95},
                              {"psnr", r.psnr},
                              {"size", r.size},
+                             {"sm_clock_mhz", r.sm_clock_mhz},
                              {"settings", trade_off_settings_json(r.frame, size)},
                              {"error", r.error}});
     // The Pareto front over all views, cheapest first: what `fgplay xr --trade-offs` walks.

@@ -22,6 +22,7 @@ struct BenchRow {
     std::size_t not_finite = 0, overstepped = 0;
     std::size_t reference_cpu_checked = 0, reference_cpu_disagree = 0;
     double time_speedup = 0.0, evaluation_speedup = 0.0;   // baseline / this, same view
+    int sm_clock_mhz = -1;   // an NVIDIA GPU's shader clock just after the timed frames (NVML); -1 unread
     std::string error;
 
     double frame_ms() const;
@@ -40,6 +41,7 @@ struct BenchReport {
     int frames = 0;
     std::vector<BenchRow> rows;
     std::vector<CompileFigure> compile;
+    unsigned max_sm_mhz = 0;   // the GPU's highest shader clock where NVML reads it, else 0
 
     void fill_ratios();
     void write(const std::string& folder) const;

@@ -136,6 +136,7 @@ int run_bench(const BenchOptions& o) {
     fmt::print("benchmark: {} on {}, {}x{} per eye, {} views x {} settings, {} timed frames each\n", pack->manifest.name,
                ctx.device_name(), size, size, views.size(), settings.size(), frames);
     if (!ctx.timestamps_supported()) fmt::print("note: no GPU timestamps on this device; times are missing\n");
+    const auto clock = GpuClock::find(ctx.device_name());
 
     std::vector<BenchRow> rows;
     std::size_t done = 0, total = views.size() * settings.size();
@@ -193,7 +194,7 @@ int run_bench(const BenchOptions& o) {
                 // Time with counting off (it costs atomics), then one frame with it on.
                 HeadlessRenderer timed(ctx, *pack, s.frame, stereo);
                 timed.run(view.head, 0.0);   // warm-up: pipelines, caches
-                raise_gpu_clock(ctx, [&] { timed.run(view.head, 0.0); });
+                raise_gpu_clock(ctx, clock.get(), [&] { timed.run(view.head, 0.0); });
                 // Back to back: only the last timed frame is read back (a readback leaves a GPU idle).
                 RenderedFrame frame;
                 std::map<std::string, std::vector<double>> samples;
@@ -206,6 +207,7 @@ int run_bench(const BenchOptions& o) {
                     for (const auto& [group, ms] : frame.stats.gpu_ms) samples[group].push_back(ms);
                 }
                 for (const auto& [group, v] : samples) row.pass_ms[group] = median(v);
+                if (auto mhz = clock ? clock->sm_mhz() : std::nullopt) row.sm_clock_mhz = static_cast<int>(*mhz);
                 FrameSettings counting = s.frame;
                 counting.count_evaluations = true;
                 HeadlessRenderer counted(ctx, *pack, counting, stereo);
@@ -244,6 +246,7 @@ int run_bench(const BenchOptions& o) {
         }
     }
     BenchReport report{pack->manifest.name, ctx.device_name(), size, frames, rows, compile_figures};
+    report.max_sm_mhz = clock ? clock->max_sm_mhz() : 0;
     report.fill_ratios();
     report.write(o.out);
     if (o.plots) report.plot(o.out);
