@@ -28,6 +28,11 @@ void add_bench_command(CLI::App& app, BenchCommand& c) {
                       "device is a CPU)")
         ->check(CLI::IsMember({"auto", "back-to-back", "interleaved"}))
         ->capture_default_str();
+    bench->add_option("--compare-every", b.compare_every,
+                      "with --sequence: errors against the strict reference on every Nth frame only (at a headset's "
+                      "size the comparisons take most of a GPU run); timings and counts stay per frame")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
 }
 
 int BenchCommand::run() {

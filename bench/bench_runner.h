@@ -26,6 +26,9 @@ struct BenchOptions {
     // How a trace's frames are timed: "back-to-back" (then errors and counts on a second pass),
     // "interleaved" (each frame timed, read back and compared in turn) or "auto" (back to back on a GPU).
     std::string timing = "auto";
+    // Errors against the strict reference on every Nth frame of a trace (1: every frame). Timings and
+    // counts are untouched; at a headset's size the comparisons are most of a GPU run's time.
+    int compare_every = 1;
 };
 
 int run_bench(const BenchOptions& options);

@@ -6,7 +6,9 @@
 # then on the device, from the repository root, with build/gpu.tar.xz carried:
 #   bash bench/gpu_sequence.sh "$OUT" SECONDS RUN...
 # where each RUN is one of
-#   NAME:SIZE:SCENE[:TRACE,...]          head traces (fgplay bench --sequence) over graphs/gallery/SCENE.json
+#   NAME:SIZE:SCENE[:TRACE,...[:N]]      head traces (fgplay bench --sequence) over graphs/gallery/SCENE.json,
+#                                        errors on one frame in N (--compare-every N; default every frame), e.g.
+#                                        a headset's size in one call: bulb1920:1920:mandelbulb:look_around:6
 #   frame:NAME:SIZE:SCENE[:VIEW,...]     single frames of every setting (fgplay bench), e.g. the filled
 #                                        view at a headset's size: frame:bulb1920:1920:mandelbulb:filled
 # Each run's folder comes back as NAME.tar.gz (plots are drawn here afterwards: the GPU machine's
@@ -28,7 +30,7 @@ fi
 for run in "$@"; do
     kind=sequence
     if [[ $run == frame:* ]]; then kind=frame run=${run#frame:}; fi
-    IFS=: read -r name size scene subset <<<"$run"
+    IFS=: read -r name size scene subset compare_every <<<"$run"
     left=$((budget - SECONDS))
     if ((left < 20)); then
         echo "$name: not run, $left s of the budget left" | tee -a "$log"
@@ -37,6 +39,7 @@ for run in "$@"; do
     if [ "$kind" = sequence ]; then
         args=(bench --sequence --no-plots --size "$size" --scene "graphs/gallery/$scene.json" --out "/tmp/$name")
         [ -n "$subset" ] && args+=(--trace ${subset//,/ })
+        [ -n "$compare_every" ] && args+=(--compare-every "$compare_every")
     else
         args=(bench --graph "graphs/gallery/$scene.json" --no-plots --size "$size" --out "/tmp/$name")
         for view in ${subset//,/ }; do args+=(--view "$view"); done

@@ -64,11 +64,13 @@ void SequenceRow::summarize() {
         ++rendered;
         ms.push_back(f.gpu_ms);
         if (f.gpu_ms > 0.0) after.push_back(f.after_march_ms / f.gpu_ms);
-        wrong.push_back(f.misclassified_pct);
-        over.push_back(f.overstepped_pct);
-        over_march.push_back(f.overstepped_march_pct);
-        quality.push_back(f.psnr);
-        not_finite_worst = std::max(not_finite_worst, f.not_finite);
+        if (f.compared) {
+            wrong.push_back(f.misclassified_pct);
+            over.push_back(f.overstepped_pct);
+            over_march.push_back(f.overstepped_march_pct);
+            quality.push_back(f.psnr);
+            not_finite_worst = std::max(not_finite_worst, f.not_finite);
+        }
         if (f.evaluations_per_pixel >= 0.0) {
             ++counted;
             evals.push_back(f.evaluations_per_pixel);
@@ -161,10 +163,11 @@ void SequenceReport::write(const std::string& folder) const {
     for (const auto& r : rows)
         for (const auto& f : r.frames)
             frames_csv << fmt::format(
-                "{},{},{},{},{},{:.3f},{},{:.4f},{:.4f},{:.4f},{:.2f},{}\n", r.scene, r.trace, r.setting.name(), f.index,
-                f.dark ? 1 : 0, f.gpu_ms,
+                "{},{},{},{},{},{:.3f},{},{},{}\n", r.scene, r.trace, r.setting.name(), f.index, f.dark ? 1 : 0, f.gpu_ms,
                 f.evaluations_per_pixel >= 0.0 ? fmt::format("{:.3f}", f.evaluations_per_pixel) : "",
-                f.misclassified_pct, f.overstepped_pct, f.overstepped_march_pct, f.psnr,
+                f.compared ? fmt::format("{:.4f},{:.4f},{:.4f},{:.2f}", f.misclassified_pct, f.overstepped_pct,
+                                         f.overstepped_march_pct, f.psnr)
+                           : std::string(",,,"),
                 f.sm_clock_mhz >= 0.0 ? fmt::format("{:.0f}", f.sm_clock_mhz) : "");
 
     // Per scene, what the frame governor walks: `fgplay xr --trade-offs trade_offs_<scene>.json`.
@@ -182,10 +185,12 @@ void SequenceReport::write(const std::string& folder) const {
         "trace, the settings taking turns frame by frame; median, 99th percentile and worst over the frames "
         "rendered. Evaluations per pixel and "
         "SIMD lanes busy come from a separate counting renderer every {} frames (counting costs "
-        "atomics, so it is never the timed one). Errors are against the strict reference of every frame "
+        "atomics, so it is never the timed one). Errors are against the strict reference of {} "
         "(naive, a tenth of the hit threshold, half steps, 4000 steps), mean and worst frame. Speed-ups (×) are the baseline's time "
         "over the setting's, same scene, trace and pixel set, same run.\n\n",
-        kHeadsetHz, device, size, size, frames, count_every);
+        kHeadsetHz, device, size, size, frames, count_every,
+        compare_every > 1 ? fmt::format("one frame in {} (`--compare-every {}`)", compare_every, compare_every)
+                          : std::string("every frame"));
     if (back_to_back)
         md << "On this GPU a trace's timed frames ran back to back with nothing read back, so its driver saw a "
               "busy GPU and kept its clock; the errors and counts come after, from each setting's counting "

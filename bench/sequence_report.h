@@ -17,6 +17,7 @@ struct SequenceFrame {
     bool dark = false;     // brightness 0: nothing rendered, nothing measured
     double gpu_ms = 0.0;   // FrameStats.gpu_ms "frame" of the timed renderer
     double after_march_ms = 0.0;   // of it, the passes after the march: shade, post, fovea
+    bool compared = false;   // against the strict reference (every frame, or every --compare-every'th)
     double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
     double overstepped_march_pct = 0.0;   // of the oversteps, at pixels the eye marched (not foveation's fill)
     std::size_t not_finite = 0;
@@ -58,6 +59,7 @@ struct SequenceReport {
     // How busy the machine was: timings on a CPU device (lavapipe) share its cores with everything else.
     double load_start = -1.0, load_end = -1.0, wall_s = 0.0;
     bool back_to_back = false;   // a trace's timed frames ran back to back, its errors and counts after
+    int compare_every = 1;       // errors against the reference on every Nth frame (--compare-every)
     unsigned max_sm_mhz = 0;     // the GPU's highest shader clock; 0: not known (no NVML)
     std::vector<std::pair<std::string, std::string>> traces;   // name, motion
     std::vector<SequenceRow> rows;

@@ -146,6 +146,7 @@ void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel
     out.overstepped_march_pct = 100.0 * static_cast<double>(marched_oversteps) / pixels;
     out.not_finite = left.not_finite + right.not_finite;
     out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
+    out.compared = true;
 }
 
 // Before a trace: the trace's world scale, and one untimed frame on each renderer so pipelines and
@@ -205,16 +206,16 @@ void count_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, con
     }
 }
 
-// Interleaved (a CPU device's default): frame `i` timed, read back and compared, then counted every
-// `count_every` frames. A setting that reuses the frame before renders every frame on the counting
-// renderer too, so that its history is the timed one's.
-void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame& ref,
+// Interleaved (a CPU device's default): frame `i` timed, read back and compared where `ref` is given,
+// then counted every `count_every` frames. A setting that reuses the frame before renders every frame
+// on the counting renderer too, so that its history is the timed one's.
+void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame* ref,
                   double pixel_half_diagonal, const GpuScene& scene, const GpuClock* clock, int count_every,
                   SequenceRow& row) {
     RenderedFrame frame;
-    SequenceFrame f = time_frame(r, trace, i, scene, clock, &frame);
+    SequenceFrame f = time_frame(r, trace, i, scene, clock, ref ? &frame : nullptr);
     if (!f.dark) {
-        compare(frame, ref, pixel_half_diagonal, r, f);
+        if (ref) compare(frame, *ref, pixel_half_diagonal, r, f);
         const bool counts_now = i % static_cast<std::size_t>(count_every) == 0;
         if (counts_now || r.counting->executor().graph().reuse)
             count_frame(r, trace, i, scene, counts_now, f, row, nullptr);
@@ -224,14 +225,14 @@ void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, co
 
 // Back to back (a GPU's default), after the trace's timed frames: frame `i` again on the counting renderer,
 // which renders every frame in order (so a reusing setting's history is the timed one's), read back and
-// compared, its counts taken every `count_every` frames.
-void measure_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame& ref,
+// compared where `ref` is given, its counts taken every `count_every` frames.
+void measure_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame* ref,
                    double pixel_half_diagonal, const GpuScene& scene, int count_every, SequenceRow& row) {
     SequenceFrame& f = row.frames.at(i);
     if (f.dark) return;
     RenderedFrame frame;
-    count_frame(r, trace, i, scene, i % static_cast<std::size_t>(count_every) == 0, f, row, &frame);
-    compare(frame, ref, pixel_half_diagonal, r, f);
+    count_frame(r, trace, i, scene, i % static_cast<std::size_t>(count_every) == 0, f, row, ref ? &frame : nullptr);
+    if (ref) compare(frame, *ref, pixel_half_diagonal, r, f);
 }
 
 double load_average() {
@@ -281,6 +282,7 @@ int run_sequence_bench(const BenchOptions& o) {
     report.back_to_back = o.timing == "auto" ? !ctx.is_cpu_device() : o.timing == "back-to-back";
     const auto clock = GpuClock::find(ctx.device_name());
     report.max_sm_mhz = clock ? clock->max_sm_mhz() : 0;
+    report.compare_every = std::max(1, o.compare_every);
     report.size = size;
     report.frames = frames;
     report.count_every = count_every;
@@ -340,10 +342,13 @@ int run_sequence_bench(const BenchOptions& o) {
         for (const auto& trace : traces) {
             const double ref_started = elapsed_s();
             reference.set_world_scale(trace.world_scale);
+            // Only the frames compared (every one unless --compare-every): at a headset's size each
+            // reference frame holds tens of megabytes.
+            auto compared = [&](std::size_t i) { return i % static_cast<std::size_t>(report.compare_every) == 0; };
             std::vector<ReferenceFrame> refs(trace.frames.size());
             for (std::size_t i = 0; i < trace.frames.size(); ++i) {
                 const TraceFrame& tf = trace.frames[i];
-                if (tf.brightness <= 0.0) continue;
+                if (tf.brightness <= 0.0 || !compared(i)) continue;
                 set_brightness(reference, gpu_scene, tf.brightness);
                 RenderedFrame frame = reference.render(tf.head, tf.time, static_cast<std::uint32_t>(i));
                 refs[i] = {std::move(frame.left), std::move(frame.right),
@@ -351,10 +356,12 @@ int run_sequence_bench(const BenchOptions& o) {
                            std::vector<double>(frame.depth_right.begin(), frame.depth_right.end())};
             }
             const ReferenceFrame& first = refs.front();
-            if (!first.left.pixels.empty() && !refs.back().left.pixels.empty())
+            const auto last =
+                std::find_if(refs.rbegin(), refs.rend(), [](const ReferenceFrame& f) { return !f.left.pixels.empty(); });
+            if (!first.left.pixels.empty() && last != refs.rend())
                 write_png(
                     (std::filesystem::path(o.out) / fmt::format("trace_{}_{}.png", scene.name, trace.name)).string(),
-                    side_by_side(first.left, refs.back().left));
+                    side_by_side(first.left, last->left));
             fmt::print("{} {}: reference of {} frames in {}\n", scene.name, trace.name, trace.frames.size(),
                        minutes(elapsed_s() - ref_started));
 
@@ -393,11 +400,12 @@ int run_sequence_bench(const BenchOptions& o) {
                     });
             }
             for (std::size_t i = 0; i < trace.frames.size(); ++i) {
+                const ReferenceFrame* ref = compared(i) ? &refs[i] : nullptr;
                 each_setting(i, [&](std::size_t s) {
                     if (report.back_to_back)
-                        measure_frame(*renderers[s], trace, i, refs[i], half_diagonal, gpu_scene, count_every, rows[s]);
+                        measure_frame(*renderers[s], trace, i, ref, half_diagonal, gpu_scene, count_every, rows[s]);
                     else
-                        render_frame(*renderers[s], trace, i, refs[i], half_diagonal, gpu_scene, clock.get(), count_every,
+                        render_frame(*renderers[s], trace, i, ref, half_diagonal, gpu_scene, clock.get(), count_every,
                                      rows[s]);
                 });
                 ++done;

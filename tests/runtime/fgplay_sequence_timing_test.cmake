@@ -1,7 +1,8 @@
 # `fgplay bench --sequence --timing back-to-back` (a GPU's default: timed frames first, then errors and
 # counts from each setting's counting renderer) measures the same frames as `--timing interleaved`
 # (each timed frame read back and compared): every frame's errors, PSNR and evaluations are equal,
-# the reusing settings' and the snap turn's dark frame included, and the report says how it timed.
+# the reusing settings' and the snap turn's dark frame included, and the report says how it timed;
+# with --compare-every 3 the same figures on the frames it compares, blanks on the others.
 include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -10,7 +11,7 @@ set(ENV{MESA_SHADER_CACHE_DISABLE} true)
 # Every column of sequence_frames.csv but the times: frame_ms (6th) and sm_clock_mhz (last).
 function(measured_frames mode out)
   execute_process(COMMAND ${FGPLAY} bench --sequence --quick --no-plots --timing ${mode} --trace snap_turn
-                          --out ${WORK}/${mode}
+                          --out ${WORK}/${mode} ${ARGN}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "fgplay bench --sequence --timing ${mode} failed: ${log}${err}")
@@ -38,6 +39,32 @@ foreach(i RANGE 1 ${n})
     message(FATAL_ERROR "the frames differ between the timings:\n  back-to-back: ${a}\n  interleaved:  ${b}")
   endif()
 endforeach()
+# --compare-every 3: the same frames, timed and counted, compared on frames 0, 3, 6 ... only (the
+# others' error cells blank), and the report says so.
+file(REMOVE_RECURSE ${WORK}/back-to-back)
+measured_frames(back-to-back sparse --compare-every 3)
+list(LENGTH sparse n_sparse)
+if(NOT n_sparse EQUAL n)
+  message(FATAL_ERROR "--compare-every 3: ${n_sparse} lines in sequence_frames.csv, not ${n}")
+endif()
+foreach(i RANGE 2 ${n})
+  math(EXPR at "${i} - 1")
+  list(GET sparse ${at} a)
+  list(GET together ${at} b)
+  string(REPLACE "," ";" fields "${b}")
+  list(GET fields 3 frame)
+  math(EXPR left_over "${frame} % 3")
+  if(NOT left_over EQUAL 0)
+    string(REGEX REPLACE "^([^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,)[^,]*,[^,]*,[^,]*,[^,]*$" "\\1,,," b "${b}")
+  endif()
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "--compare-every 3, frame ${frame}:\n  measured: ${a}\n  expected: ${b}")
+  endif()
+endforeach()
+file(READ ${WORK}/back-to-back/sequence.md md)
+if(NOT md MATCHES "one frame in 3")
+  message(FATAL_ERROR "sequence.md does not say errors were compared on one frame in 3")
+endif()
 file(READ ${WORK}/back-to-back/sequence.md md)
 if(NOT md MATCHES "timed frames ran back to back")
   message(FATAL_ERROR "sequence.md does not say the frames were timed back to back")
