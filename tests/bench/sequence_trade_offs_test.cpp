@@ -27,6 +27,7 @@ SequenceRow row(const std::string& scene, const std::string& trace, const Sequen
         SequenceFrame f;
         f.index = i;
         f.gpu_ms = ms;
+        f.compared = true;
         f.misclassified_pct = wrong;
         r.frames.push_back(f);
     }
