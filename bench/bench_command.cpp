@@ -33,6 +33,9 @@ void add_bench_command(CLI::App& app, BenchCommand& c) {
                       "size the comparisons take most of a GPU run); timings and counts stay per frame")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    bench->add_option("--variant", b.variants,
+                      "with --sequence: also per-eye conemarch with these knobs, on each pixel set: "
+                      "knob=value[,knob=value] (repeatable; e.g. cone_steps=16)");
 }
 
 int BenchCommand::run() {

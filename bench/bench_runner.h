@@ -29,6 +29,8 @@ struct BenchOptions {
     // Errors against the strict reference on every Nth frame of a trace (1: every frame). Timings and
     // counts are untouched; at a headset's size the comparisons are most of a GPU run's time.
     int compare_every = 1;
+    // `--variant`: per-eye conemarch again with these knobs, "knob=value[,knob=value]" each.
+    std::vector<std::string> variants;
 };
 
 int run_bench(const BenchOptions& options);

@@ -35,7 +35,7 @@ private:
 // On a GPU, untimed frames before frames are timed: whatever ran before (pipeline builds, readbacks,
 // comparisons) left it idle and its clock low, and it takes a busy spell to rise. Half a second at
 // least; where NVML reads the clock, on until it is within 5 % of its maximum, 3 s at most (on an
-// H100 half a second once left a whole head trace at 690-990 of 1980 MHz). Nothing on a CPU device,
+// H100, after half a second, a head trace's first frame once ran at 690 of 1980 MHz). Nothing on a CPU device,
 // which has no such clock.
 void raise_gpu_clock(const vk::Context& ctx, const GpuClock* clock, const std::function<void()>& untimed_frame);
 

@@ -2,13 +2,15 @@
 # The benchmarks on a lent GPU machine, inside a fixed budget of seconds. Here, first:
 #   bash ../shared/tools/gpu-bundle.sh build/gpu build/runtime/fgplay && strip build/gpu/fgplay
 #   tar cJf build/gpu.tar.xz -C build gpu
-# (the bundle, 28 MB, and the tracked tree, 52 MB, overflow the device's 64 MiB; xz makes it 8 MB)
+# (the bundle, 28 MB, beside the tracked tree, 43 MB, would overflow the device's 64 MiB; xz makes it 8 MB)
 # then on the device, from the repository root, with build/gpu.tar.xz carried:
 #   bash bench/gpu_sequence.sh "$OUT" SECONDS RUN...
 # where each RUN is one of
-#   NAME:SIZE:SCENE[:TRACE,...[:N]]      head traces (fgplay bench --sequence) over graphs/gallery/SCENE.json,
-#                                        errors on one frame in N (--compare-every N; default every frame), e.g.
-#                                        a headset's size in one call: bulb1920:1920:mandelbulb:look_around:6
+#   NAME:SIZE:SCENE[:TRACE,...[:N[:VARIANT/...]]]
+#                                        head traces (fgplay bench --sequence) over graphs/gallery/SCENE.json,
+#                                        errors on one frame in N (--compare-every N; default every frame), and
+#                                        per-eye again with each VARIANT's knobs (--variant knob=value[,knob=value]),
+#                                        e.g. bulb1920:1920:mandelbulb:look_around:6:cone_steps=16
 #   frame:NAME:SIZE:SCENE[:VIEW,...]     single frames of every setting (fgplay bench), e.g. the filled
 #                                        view at a headset's size: frame:bulb1920:1920:mandelbulb:filled
 # Each run's folder comes back as NAME.tar.gz (plots are drawn here afterwards: the GPU machine's
@@ -30,7 +32,7 @@ fi
 for run in "$@"; do
     kind=sequence
     if [[ $run == frame:* ]]; then kind=frame run=${run#frame:}; fi
-    IFS=: read -r name size scene subset compare_every <<<"$run"
+    IFS=: read -r name size scene subset compare_every variants <<<"$run"
     left=$((budget - SECONDS))
     if ((left < 20)); then
         echo "$name: not run, $left s of the budget left" | tee -a "$log"
@@ -40,6 +42,7 @@ for run in "$@"; do
         args=(bench --sequence --no-plots --size "$size" --scene "graphs/gallery/$scene.json" --out "/tmp/$name")
         [ -n "$subset" ] && args+=(--trace ${subset//,/ })
         [ -n "$compare_every" ] && args+=(--compare-every "$compare_every")
+        for variant in ${variants//\// }; do args+=(--variant "$variant"); done
     else
         args=(bench --graph "graphs/gallery/$scene.json" --no-plots --size "$size" --out "/tmp/$name")
         for view in ${subset//,/ }; do args+=(--view "$view"); done

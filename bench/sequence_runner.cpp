@@ -272,7 +272,15 @@ int run_sequence_bench(const BenchOptions& o) {
     ctx_options.device = o.device;
     ctx_options.require_timestamps = false;
     vk::Context ctx(ctx_options);
-    const auto settings = make_sequence_settings(size, o.quick);
+    std::vector<SequenceVariant> variants(o.variants.size());
+    for (std::size_t i = 0; i < o.variants.size(); ++i) {
+        std::string error;
+        if (!parse_sequence_variant(o.variants[i], variants[i], error)) {
+            fmt::print(stderr, "fgplay bench --sequence: {}\n", error);
+            return 2;
+        }
+    }
+    const auto settings = make_sequence_settings(size, o.quick, variants);
     SequenceReport report;
     report.device = ctx.device_name();
     // A GPU whose frames alternate with readbacks and comparisons looks idle to its driver, which

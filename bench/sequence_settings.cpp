@@ -1,10 +1,37 @@
 #include "sequence_settings.h"
 
+#include <fmt/format.h>
+
+#include "frame/frame_arguments.h"
+
 namespace fg::bench {
 
 std::string SequenceSetting::name() const { return pixels == kAllPixels ? method : method + " with " + pixels; }
 
-std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool quick) {
+std::string SequenceVariant::method() const {
+    // No commas: the name is a CSV cell.
+    std::string out = "per-eye +";
+    for (const auto& [knob, value] : knobs) out += fmt::format(" {}={:g}", knob, value);
+    return out;
+}
+
+bool parse_sequence_variant(const std::string& text, SequenceVariant& out, std::string& error) {
+    std::vector<std::string> parts;
+    for (std::size_t at = 0; at <= text.size();) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        parts.push_back(text.substr(at, comma - at));
+        at = comma + 1;
+    }
+    out.knobs.clear();
+    if (!parse_knobs(parts, out.knobs, error)) {
+        error = fmt::format("--variant takes knob=value[,knob=value], not '{}'", text);
+        return false;
+    }
+    return true;
+}
+
+std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool quick,
+                                                    const std::vector<SequenceVariant>& variants) {
     FrameSettings all;
     all.width = all.height = size;
     all.stereo = StereoMode::PerEye;
@@ -22,6 +49,11 @@ std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool qui
                        SequenceBaseline::NaivePersistent});
         out.push_back({"per-eye", pixels, method(StereoMode::PerEye, false, f)});
         out.push_back({"per-eye + persistent lanes", pixels, method(StereoMode::PerEye, true, f)});
+        for (const auto& v : variants) {
+            FrameSettings changed = method(StereoMode::PerEye, false, f);
+            for (const auto& [knob, value] : v.knobs) changed.knobs[knob] = value;
+            out.push_back({v.method(), pixels, changed});
+        }
         FrameSettings reuse = method(StereoMode::PerEye, false, f);
         reuse.knobs["reuse"] = 1;
         out.push_back({"per-eye + reuse", pixels, reuse});

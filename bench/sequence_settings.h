@@ -4,6 +4,7 @@
 // runs on all pixels and again with the lens mask and foveation 0.5; speed-ups compare a setting
 // with the two baselines of its own pixel set.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,18 @@ struct SequenceSetting {
 inline constexpr const char* kAllPixels = "all pixels";
 inline constexpr const char* kMaskedPixels = "lens mask + foveation 0.5";
 
+// Per-eye conemarch with some knobs changed, flown beside the fixed settings (`--variant
+// cone_steps=16`): a lever measured in the same run as its baselines, on both pixel sets.
+struct SequenceVariant {
+    std::map<std::string, double> knobs;
+    std::string method() const;   // "per-eye + cone_steps=16"
+};
+
+// "knob=value[,knob=value]". False, with `error` naming the text, where it is not that.
+bool parse_sequence_variant(const std::string& text, SequenceVariant& out, std::string& error);
+
 // `quick`: the methods on all pixels only.
-std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool quick);
+std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool quick,
+                                                    const std::vector<SequenceVariant>& variants = {});
 
 }  // namespace fg::bench

@@ -116,8 +116,10 @@ endforeach()
 
 # --quick runs the methods on all pixels only: every setting of a full run, the masked ones
 # included, must render too (the masked shading history once refused its first frame): the three
-# gallery scenes, one trace, two frames at 16x16.
-execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --trace look_around --out ${WORK}/every_setting
+# gallery scenes, one trace, two frames at 16x16, with a variant (per-eye with a knob changed) on
+# each pixel set.
+execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --trace look_around --variant cone_steps=16
+                        --out ${WORK}/every_setting
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fgplay bench --sequence over every setting failed: ${out}${err}")
@@ -125,11 +127,12 @@ endif()
 file(STRINGS ${WORK}/every_setting/sequence.csv every_lines)
 list(POP_FRONT every_lines)
 list(LENGTH every_lines n)
-math(EXPR expected_every "3 * 2 * ${setting_count}")
+math(EXPR expected_every "3 * 2 * (${setting_count} + 1)")
 if(NOT n EQUAL expected_every)
   message(FATAL_ERROR "a run over every setting has ${n} rows, expected ${expected_every} (3 scenes, each method masked "
                       "and not):\n${out}")
 endif()
+set(variant_rows 0)
 foreach(line ${every_lines})
   string(REPLACE "," ";" f "${line}")
   list(GET f 0 scene)
@@ -139,7 +142,18 @@ foreach(line ${every_lines})
   if(NOT error STREQUAL "" OR NOT ms GREATER 0)
     message(FATAL_ERROR "${scene} / ${setting} rendered no frame (${ms} ms): ${error}")
   endif()
+  if(setting MATCHES "^per-eye \\+ cone_steps=16")
+    math(EXPR variant_rows "${variant_rows} + 1")
+  endif()
 endforeach()
+if(NOT variant_rows EQUAL 6)
+  message(FATAL_ERROR "--variant cone_steps=16 gave ${variant_rows} rows named 'per-eye + cone_steps=16', not 6")
+endif()
+execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --variant cone_steps --out ${WORK}/bad_variant
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--variant takes knob=value\\[,knob=value\\], not 'cone_steps'")
+  message(FATAL_ERROR "a variant without a value: exit ${rc}, '${err}'")
+endif()
 
 # The frame governor's ladder measured on the traces (`fgplay xr --trade-offs`): a front, and the rows behind it.
 file(READ ${WORK}/seq/trade_offs_mandelbulb.json offs)
