@@ -15,7 +15,7 @@ void add_bench_command(CLI::App& app, BenchCommand& c) {
     bench->add_option("--out", b.out, "output folder")->capture_default_str();
     bench->add_flag("--quick", b.quick, "a couple of minutes on two cores: 128x128, two views, a few settings");
     bench->add_option("--size", b.size, "per-eye size (default 512, quick 128)");
-    bench->add_option("--frames", b.frames, "timed frames per setting (default 3, quick 2)");
+    bench->add_option("--frames", b.frames, "timed frames per setting (default 3, 15 on a GPU, quick 2)");
     bench->add_option("--view", b.views, "afar, filled, grazing, deep_zoom (repeatable; default all)");
     bench->add_option("--device", b.device, "Vulkan device: index or name substring");
     bench->add_flag("--no-plots", c.no_plots, "skip the matplotlib plots");
