@@ -75,10 +75,7 @@ void BenchReport::write(const std::string& folder) const {
     std::vector<double> clocks;
     for (const auto& r : rows)
         if (r.sm_clock_mhz >= 0) clocks.push_back(r.sm_clock_mhz);
-    if (!clocks.empty())
-        md << fmt::format("Shader clock just after each setting's timed frames (NVML): median {:.0f} MHz, lowest {:.0f} "
-                          "MHz, of the GPU's {} MHz.\n\n",
-                          median(clocks), *std::min_element(clocks.begin(), clocks.end()), max_sm_mhz);
+    md << shader_clock_paragraph(clocks, max_sm_mhz, "each setting's timed frames");
     std::vector<std::string> views;
     for (const auto& r : rows)
         if (std::find(views.begin(), views.end(), r.view) == views.end()) views.push_back(r.view);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 
 namespace fg::bench {
 
@@ -18,6 +19,13 @@ double percentile(std::vector<double> v, double p) {
     std::size_t below = static_cast<std::size_t>(std::floor(at));
     std::size_t above = std::min(below + 1, v.size() - 1);
     return v[below] + (v[above] - v[below]) * (at - static_cast<double>(below));
+}
+
+std::string shader_clock_paragraph(const std::vector<double>& mhz, unsigned max_mhz, const std::string& after) {
+    if (mhz.empty()) return {};
+    return fmt::format("Shader clock just after {} (NVML): median {:.0f} MHz, lowest {:.0f} MHz, of the GPU's {} "
+                       "MHz.\n\n",
+                       after, median(mhz), *std::min_element(mhz.begin(), mhz.end()), max_mhz);
 }
 
 double psnr(const Rgba8Image& a, const Rgba8Image& b, std::span<const std::uint8_t> visible) {

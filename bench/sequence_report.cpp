@@ -199,11 +199,7 @@ void SequenceReport::write(const std::string& folder) const {
     for (const auto& r : rows)
         for (const auto& f : r.frames)
             if (f.sm_clock_mhz >= 0.0) clocks.push_back(f.sm_clock_mhz);
-    if (!clocks.empty())
-        md << fmt::format(
-            "Shader clock just after each timed frame (NVML): median {:.0f} MHz, lowest {:.0f} MHz, of the "
-            "GPU's {} MHz.\n\n",
-            median(clocks), smallest(clocks), max_sm_mhz);
+    md << shader_clock_paragraph(clocks, max_sm_mhz, "each timed frame");
     if (load_start >= 0.0)
         md << fmt::format(
             "The run took {:.1f} min; the machine's 1-minute load average was {:.1f} at its start and "

@@ -401,7 +401,8 @@ int run_sequence_bench(const BenchOptions& o) {
                 }
             };
             if (report.back_to_back) {
-                raise_gpu_clock(ctx, clock.get(), [&] { reference.run(trace.frames.front().head, trace.frames.front().time, 0); });
+                const TraceFrame& first_frame = trace.frames.front();
+                raise_gpu_clock(ctx, clock.get(), [&] { reference.run(first_frame.head, first_frame.time, 0); });
                 for (std::size_t i = 0; i < trace.frames.size(); ++i)
                     each_setting(i, [&](std::size_t s) {
                         rows[s].frames.push_back(time_frame(*renderers[s], trace, i, gpu_scene, clock.get(), nullptr));
