@@ -117,8 +117,8 @@ endforeach()
 # --quick runs the methods on all pixels only: every setting of a full run, the masked ones
 # included, must render too (the masked shading history once refused its first frame): the three
 # gallery scenes, one trace, two frames at 16x16, with a variant (per-eye with a knob changed) on
-# each pixel set.
-execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --trace look_around --variant cone_steps=16
+# each pixel set: two fine steps must evaluate less than per-eye's default.
+execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --trace look_around --variant fine_steps=2
                         --out ${WORK}/every_setting
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
@@ -139,19 +139,34 @@ foreach(line ${every_lines})
   list(GET f ${setting_at} setting)
   list(GET f ${ms_at} ms)
   list(GET f ${error_at} error)
+  list(GET f ${evals_at} evals)
   if(NOT error STREQUAL "" OR NOT ms GREATER 0)
     message(FATAL_ERROR "${scene} / ${setting} rendered no frame (${ms} ms): ${error}")
   endif()
-  if(setting MATCHES "^per-eye \\+ cone_steps=16")
+  string(MAKE_C_IDENTIFIER "${scene}_${setting}" key)
+  set(evals_${key} ${evals})
+  if(setting MATCHES "^per-eye \\+ fine_steps=2")
     math(EXPR variant_rows "${variant_rows} + 1")
+    string(REPLACE " + fine_steps=2" "" plain "${setting}")
+    string(MAKE_C_IDENTIFIER "${scene}_${plain}" plain_key)
+    list(APPEND variant_pairs "${key}:${plain_key}")
   endif()
 endforeach()
 if(NOT variant_rows EQUAL 6)
-  message(FATAL_ERROR "--variant cone_steps=16 gave ${variant_rows} rows named 'per-eye + cone_steps=16', not 6")
+  message(FATAL_ERROR "--variant fine_steps=2 gave ${variant_rows} rows named 'per-eye + fine_steps=2', not 6")
 endif()
-execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --variant cone_steps --out ${WORK}/bad_variant
+foreach(pair ${variant_pairs})
+  string(REPLACE ":" ";" pair "${pair}")
+  list(GET pair 0 variant)
+  list(GET pair 1 plain)
+  if(NOT evals_${variant} LESS evals_${plain})
+    message(FATAL_ERROR "${variant}: ${evals_${variant}} evaluations per pixel, not fewer than ${plain}'s "
+                        "${evals_${plain}}: the variant's knob was not applied")
+  endif()
+endforeach()
+execute_process(COMMAND ${FGPLAY} bench --sequence --size 16 --frames 2 --variant fine_steps --out ${WORK}/bad_variant
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 2 OR NOT err MATCHES "--variant takes knob=value\\[,knob=value\\], not 'cone_steps'")
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--variant takes knob=value\\[,knob=value\\], not 'fine_steps'")
   message(FATAL_ERROR "a variant without a value: exit ${rc}, '${err}'")
 endif()
 
