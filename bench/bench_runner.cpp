@@ -136,7 +136,7 @@ int run_bench(const BenchOptions& o) {
     const int frames = o.frames ? o.frames : (o.quick ? 2 : ctx.is_cpu_device() ? 3 : 15);
     auto settings = make_sweep(pack->manifest, {o.quick, size});
     fmt::print("benchmark: {} on {}, {}x{} per eye, {} views x {} settings, {} timed frames each\n", pack->manifest.name,
-               ctx.device_name(), size, size, views.size(), settings.size(), frames);
+               ctx.device_summary(), size, size, views.size(), settings.size(), frames);
     if (!ctx.timestamps_supported()) fmt::print("note: no GPU timestamps on this device; times are missing\n");
     const auto clock = GpuClock::find(ctx.device_name());
 

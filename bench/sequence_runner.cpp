@@ -298,7 +298,7 @@ int run_sequence_bench(const BenchOptions& o) {
     fmt::print(
         "sequence benchmark on {}: {} scenes x {} traces x {} settings, {}x{} per eye, {} frames per trace at "
         "{:g} Hz\n",
-        ctx.device_name(), scenes.size(), wanted.size(), settings.size(), size, size, frames, kHeadsetHz);
+        ctx.device_summary(), scenes.size(), wanted.size(), settings.size(), size, size, frames, kHeadsetHz);
     if (!ctx.timestamps_supported()) fmt::print("note: no GPU timestamps on this device; times are missing\n");
 
     // Every scene compiled before the first frame: a graph with an error fails now, not an hour in.

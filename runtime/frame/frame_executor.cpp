@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/spec_constants.h"
+#include "persistent_groups.h"
 #include "vk/commands.h"
 #include "vk/timestamp_queries.h"
 
@@ -368,15 +369,14 @@ const vk::Access kPassAccess{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELIN
                              VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT};
 
-std::array<std::uint32_t, 3> group_count(const FramePass& pass, const ManifestPass& mp) {
+std::array<std::uint32_t, 3> group_count(const FramePass& pass, const ManifestPass& mp, const vk::Context& ctx,
+                                         std::uint64_t requested_invocations) {
     if (pass.persistent_lanes) {
-        // Enough workgroups to keep the device full and the queue's refills rare: half a lane's
-        // bound per lane on average (FG_LANE_PIXELS), so the lanes can take every index of the
-        // queue (whole 8x8 tiles) even when the first groups to run take all they may.
+        // The queue hands out whole 8x8 tiles.
         auto tiles = [](std::uint32_t n) { return (std::uint64_t(n) + 7) / 8; };
         std::uint64_t indices = tiles(pass.invocations[0]) * tiles(pass.invocations[1]) * 64 * pass.invocations[2];
-        std::uint64_t per_group = std::uint64_t(mp.local_size[0]) * mp.local_size[1] * mp.local_size[2] * (FG_LANE_PIXELS / 2);
-        return {static_cast<std::uint32_t>(std::max<std::uint64_t>(1, (indices + per_group - 1) / per_group)), 1, 1};
+        std::uint64_t fill = persistent_fill(indices, ctx.is_cpu_device(), ctx.resident_invocations(), requested_invocations);
+        return {persistent_group_count(indices, mp.local_size[0] * mp.local_size[1] * mp.local_size[2], fill), 1, 1};
     }
     std::array<std::uint32_t, 3> groups{};
     for (int i = 0; i < 3; ++i) groups[i] = (pass.invocations[i] + mp.local_size[i] - 1) / std::max(1u, mp.local_size[i]);
@@ -444,7 +444,7 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
                     prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
                 }
             } else if (pass.indirect.empty()) {
-                auto g = group_count(pass, *prog.manifest);
+                auto g = group_count(pass, *prog.manifest, ctx_, graph_.settings.persistent_invocations);
                 prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
             } else {
                 prog.pipeline->dispatch_indirect(cmd, set, buffers_.at(pass.indirect)->handle(), 0, pass.push);

@@ -42,6 +42,9 @@ struct FrameSettings {
     // or test what the tiles save).
     bool tile_dispatch = true;
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
+    // Persistent lanes: invocations each persistent dispatch launches at least (0: as many as the
+    // device runs at once; persistent_groups.h). For tests and sweeps.
+    std::uint64_t persistent_invocations = 0;
     // Set from the pack, not by the user: a pack of precision "double" gets its view origins
     // relative to the camera (gpu_uniforms.h).
     bool camera_relative = false;

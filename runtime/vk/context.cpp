@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 
 #include "vk/device_features.h"
+#include "vk/device_occupancy.h"
 #include "vk/device_selection.h"
+#include "vk/extensions.h"
 #include "vk/log.h"
 #include "vk/vulkan_error.h"
 
@@ -30,32 +32,6 @@ std::vector<VkLayerProperties> instance_layers() {
     check(vkEnumerateInstanceLayerProperties(&count, layers.data()), "vkEnumerateInstanceLayerProperties");
     layers.resize(count);
     return layers;
-}
-
-std::vector<VkExtensionProperties> instance_extensions(const char* layer) {
-    std::uint32_t count = 0;
-    check(vkEnumerateInstanceExtensionProperties(layer, &count, nullptr), "vkEnumerateInstanceExtensionProperties");
-    std::vector<VkExtensionProperties> extensions(count);
-    check(vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data()),
-          "vkEnumerateInstanceExtensionProperties");
-    extensions.resize(count);
-    return extensions;
-}
-
-std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice physical) {
-    std::uint32_t count = 0;
-    check(vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr),
-          "vkEnumerateDeviceExtensionProperties");
-    std::vector<VkExtensionProperties> extensions(count);
-    check(vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, extensions.data()),
-          "vkEnumerateDeviceExtensionProperties");
-    extensions.resize(count);
-    return extensions;
-}
-
-bool has_extension(const std::vector<VkExtensionProperties>& extensions, const char* name) {
-    return std::any_of(extensions.begin(), extensions.end(),
-                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 std::vector<VkQueueFamilyProperties> queue_families(VkPhysicalDevice physical) {
@@ -254,7 +230,14 @@ void Context::select_physical_device(const ContextOptions& options) {
     timestamp_valid_bits_ = chosen.timestamps ? queue_families(physical_)[queue_family_].timestampValidBits : 0;
     vkGetPhysicalDeviceProperties(physical_, &properties_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_properties_);
-    logger().debug("using Vulkan device {}", describe(chosen));
+    resident_invocations_ = vk::resident_invocations(physical_);
+    logger().debug("using Vulkan device {} ({} invocations at once{})", describe(chosen), resident_invocations_,
+                   resident_invocations_ ? "" : ": not reported");
+}
+
+std::string Context::device_summary() const {
+    if (resident_invocations_ == 0) return device_name();
+    return fmt::format("{} ({} invocations at once)", device_name(), resident_invocations_);
 }
 
 void Context::create_device(const ContextOptions& options) {

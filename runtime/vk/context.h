@@ -57,6 +57,10 @@ public:
     const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_properties_; }
     std::string device_name() const { return properties_.deviceName; }
     bool is_cpu_device() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+    // Shader invocations the device runs at once; 0 when it does not say (device_occupancy.h).
+    std::uint64_t resident_invocations() const { return resident_invocations_; }
+    // The name, and how many invocations the device runs at once where it says.
+    std::string device_summary() const;
 
     bool timestamps_supported() const { return timestamp_valid_bits_ > 0 && timestamp_period_ns() > 0.0f; }
     float timestamp_period_ns() const { return properties_.limits.timestampPeriod; }
@@ -96,6 +100,7 @@ private:
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_properties_{};
     std::uint32_t timestamp_valid_bits_ = 0;
+    std::uint64_t resident_invocations_ = 0;
     bool host_query_reset_ = false;
     bool shader_float64_ = false;
     bool shader_int64_ = false;
