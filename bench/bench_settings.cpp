@@ -109,6 +109,8 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     for (std::uint32_t size : {o.size / 2}) {
         FrameSettings f = def;
         f.width = f.height = size;
+        // The output stays o.size: its pixels set the hit threshold, as the governor's lower scales do.
+        f.detail_scale = static_cast<double>(size) / o.size;
         add("resolution", fmt::format("{}x{} per eye", size, size), f);
     }
 

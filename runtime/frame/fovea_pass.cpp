@@ -13,7 +13,7 @@ void add_fovea_passes(FrameGraph& g) {
         p.program = "fovea";
         p.timer = "fovea";
         p.bind("fg_depth", "depth." + eye, Access::ReadWrite);
-        p.bind("fg_final", "final." + eye, Access::ReadWrite);
+        p.bind("fg_final", g.shaded_image(view), Access::ReadWrite);
         p.set_push(FoveaPush{view});
         p.invocations = {(g.width + 1) / 2, (g.height + 1) / 2, 1};   // one per 2x2 block
         g.dispatch_tiles(p, view, TileRegion::Fill);

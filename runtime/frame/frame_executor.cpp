@@ -290,6 +290,9 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     frame_data_.previous[1] = previous_views_[1];
     frame_data_.reuse = graph_.reuse && history_valid_ ? 1u : 0u;
     frame_data_.shade_history = graph_.shade_history && history_valid_ ? 1u : 0u;
+    frame_data_.taa_history = graph_.taa && history_valid_ ? 1u : 0u;
+    frame_data_.jitter.z = previous_jitter_.x;
+    frame_data_.jitter.w = previous_jitter_.y;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
     update_tile_lists();
@@ -301,6 +304,7 @@ void FrameExecutor::forget_history() {
     history_valid_ = false;
     frame_data_.reuse = 0u;
     frame_data_.shade_history = 0u;
+    frame_data_.taa_history = 0u;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
 }
@@ -332,10 +336,11 @@ void FrameExecutor::update_tile_lists() {
 }
 
 void FrameExecutor::set_scene(const GpuScene& scene) {
-    // Shading history holds colours lit by the old light and background; the fade comes after it.
+    // Shading history and temporal anti-aliasing hold colours lit by the old light and background;
+    // the fade comes after it.
     GpuScene unfaded = scene;
     unfaded.fade = scene_data_.fade;
-    if (graph_.shade_history && std::memcmp(&unfaded, &scene_data_, sizeof scene) != 0) forget_history();
+    if ((graph_.shade_history || graph_.taa) && std::memcmp(&unfaded, &scene_data_, sizeof scene) != 0) forget_history();
     scene_data_ = scene;
     std::memcpy(scene_->data(), &scene, sizeof scene);
     scene_->flush();
@@ -470,6 +475,7 @@ FrameStats FrameExecutor::run() {
     ++frames_run_;
     previous_views_[0] = frame_data_.views[FG_VIEW_LEFT];
     previous_views_[1] = frame_data_.views[FG_VIEW_RIGHT];
+    previous_jitter_ = {frame_data_.jitter.x, frame_data_.jitter.y};
     history_valid_ = true;
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();

@@ -102,6 +102,7 @@ private:
     GpuFrame frame_data_{};
     GpuScene scene_data_{};
     GpuView previous_views_[2]{};   // the eyes of the last frame run
+    glm::vec2 previous_jitter_{0.0f};   // and their jitter
     bool history_valid_ = false;
     // The tile lists of the graph's tile buffers, remade only when what places them changes (at a
     // headset's resolution a list has tens of thousands of tiles) and written before the next frame.

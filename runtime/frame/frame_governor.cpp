@@ -90,6 +90,8 @@ FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& 
     FrameSettings f = full;
     f.width = std::max(8u, static_cast<std::uint32_t>(std::lround(width * level.render_scale)));
     f.height = std::max(8u, static_cast<std::uint32_t>(std::lround(height * level.render_scale)));
+    // The display's pixels set the detail at any render scale: a lower level shows the same fractal.
+    f.detail_scale = full.detail_scale * static_cast<double>(f.width) / width;
     f.foveation = level.foveation;
     f.stereo = level.stereo.value_or(full.stereo);
     f.cone_levels = level.cone_levels.value_or(full.cone_levels);

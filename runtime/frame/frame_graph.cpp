@@ -243,6 +243,11 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.shade_history = has_history_knob && knob("shade_history") > 0.0 && !manifest.animated && !g.is_panorama() &&
                       manifest.precision == "float" && !g.effects.has(Effect::Rim) && !g.effects.has(Effect::Subsurface);
     if (has_history_knob && !g.shade_history) g.settings.knobs["shade_history"] = 0.0;
+    // Temporal anti-aliasing reprojects each hit into the previous frame: the scene must stay put,
+    // and float origins must not move with the camera. Otherwise frames are plain, unjittered.
+    g.taa = g.settings.taa && !manifest.animated && !g.is_panorama() && manifest.precision == "float" &&
+            manifest.find_pass("taa") != nullptr;
+    g.settings.taa = g.taa;
     // What the pack's shaders can do that an older fgc's could not.
     auto declares = [&](const char* program, const DispatchConstant& c) {
         const ManifestPass* p = manifest.find_pass(program);
@@ -256,6 +261,8 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
             throw std::runtime_error(fmt::format("the pack has no '{}' pass: recompile it with this fgc", p.program));
     return g;
 }
+
+std::string FrameGraph::shaded_image(int view) const { return (taa ? "jittered." : "final.") + std::string(view_name(view)); }
 
 std::uint64_t FrameGraph::memory_bytes() const {
     std::uint64_t bytes = 0;
@@ -278,6 +285,7 @@ std::string FrameGraph::describe() const {
                      settings.foveation > 0.0 ? fmt::format("fovea radius {:g}, blend {:g}", settings.foveation,
                                                             settings.foveation_blend)
                                               : std::string("off"));
+    if (taa) s += "anti-aliasing: temporal (jittered rays, a history per eye)\n";
     auto names = effects.names();
     s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
     s += fmt::format("images and buffers ({}):\n", images_.size() + buffers_.size());

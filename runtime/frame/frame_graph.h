@@ -167,6 +167,11 @@ public:
     bool tile_dispatch = false;
     // The pack's conemarch can start a foveated periphery's pixels from level 2 (conemarch_pass.cpp).
     bool periphery_from_level_2 = false;
+    // Temporal anti-aliasing (taa_pass.cpp), where it can hold: a static float scene in perspective.
+    bool taa = false;
+    // The image the shade and fovea passes write a view's picture to: its final image, or with
+    // temporal anti-aliasing the jittered frame the taa pass resolves into it.
+    std::string shaded_image(int view) const;
 
 private:
     std::vector<FrameImage> images_;

@@ -41,6 +41,12 @@ struct FrameSettings {
     // periphery's, those the lens shows), not its whole image (the same frames; off only to measure
     // or test what the tiles save).
     bool tile_dispatch = true;
+    // Temporal anti-aliasing: each frame's rays go through a jittered pixel grid, and a resolve pass
+    // blends them into a history per eye (taa_pass.cpp). Static float scenes in perspective only.
+    bool taa = false;
+    // Output pixels are this many marched pixels wide (the supersampling factor; below 1 where an
+    // image is shown larger than it was marched): the hit threshold and normal taps follow them.
+    double detail_scale = 1.0;
     std::map<std::string, double> knobs;        // specialization constant overrides by manifest name
     // Persistent lanes: invocations each persistent dispatch launches at least (0: as many as the
     // device runs at once; persistent_groups.h). For tests and sweeps.

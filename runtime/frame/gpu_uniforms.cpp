@@ -53,6 +53,8 @@ GpuFrame make_gpu_frame(const StereoViews& views, const FrameSettings& settings,
     f.ipd = static_cast<float>(views.ipd);
     f.pixel_cone_tan = static_cast<float>(views.pixel_half_diagonal);
     f.pixel_tan = static_cast<float>(views.pixel_tan);
+    f.detail_cone = static_cast<float>(views.pixel_half_diagonal * settings.detail_scale);
+    f.jitter = {static_cast<float>(views.jitter.x), static_cast<float>(views.jitter.y), 0.0f, 0.0f};
     return f;
 }
 

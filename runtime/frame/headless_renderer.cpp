@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "aov_images.h"
+#include "sample_jitter.h"
 
 namespace fg {
 
@@ -42,6 +43,7 @@ StereoViews HeadlessRenderer::make_views(const HeadPose& head) const {
 void HeadlessRenderer::set_world_scale(double world_scale) { stereo_.world_scale = world_scale; }
 
 FrameStats HeadlessRenderer::run(const HeadPose& head, double time, std::uint32_t frame_index) {
+    if (executor_->graph().taa) stereo_.jitter = taa_jitter(frame_index);
     views_ = make_views(head);
     GpuFrame gpu = make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index);
     executor_->set_frame(gpu);

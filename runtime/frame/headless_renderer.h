@@ -35,6 +35,8 @@ public:
     // The same frame with nothing read back, only its stats: a GPU kept busy with frames back to back
     // holds its clock, as under a headset's load, where readbacks between frames would let it fall.
     FrameStats run(const HeadPose& head, double time, std::uint32_t frame_index = 0);
+    // The sub-pixel offset of both eyes' pixel grids from the next frame on (StereoSettings::jitter).
+    void set_jitter(glm::dvec2 pixels) { stereo_.jitter = pixels; }
     // Scene units per metre from the next frame on (a camera path zooms): the IPD follows it.
     void set_world_scale(double world_scale);
     FrameExecutor& executor() { return *executor_; }

@@ -26,6 +26,7 @@ void add_shade_passes(FrameGraph& g) {
     for (int view : g.output_views()) {
         std::string eye = view_name(view);
         g.add_image({"final." + eye, g.width, g.height, ImageFormat::RGBA8, "final image"});
+        if (g.taa) g.add_image({g.shaded_image(view), g.width, g.height, ImageFormat::RGBA8, "this frame's jittered samples"});
         // Shading reuse: each eye keeps its shading before post effects, as terms (the colour without
         // the terms that read the view, and the albedo); the right eye reads the left eye's (shaded
         // first) where both see the same point. Without the knob each eye's "other" is its own, so the
@@ -51,7 +52,7 @@ void add_shade_passes(FrameGraph& g) {
             p.program = "shade";
             p.timer = "shade";
             p.bind("fg_depth", "depth." + eye, Access::Read);
-            p.bind("fg_final", "final." + eye, Access::Write);
+            p.bind("fg_final", g.shaded_image(view), Access::Write);
             if (g.effects.has(Effect::Glow)) p.bind("fg_glow", "glow." + eye, Access::Read);
             p.bind("fg_shaded", shaded, Access::Write);
             p.bind("fg_other_color", reuse ? "color." + other : shaded, Access::Read);

@@ -66,7 +66,16 @@ StereoViews make_stereo_views(const HeadPose& head, const Fov& left, const Fov& 
     double cx = 0.5 * (l + rr), cy = 0.5 * (d + up);
     c.fov = {cx - 0.5 * c.width * dx, cx + 0.5 * c.width * dx, cy - 0.5 * c.height * dy, cy + 0.5 * c.height * dy};
     out.centre = c;
+    out.left.fov = jittered(out.left.fov, s.jitter, s.width, s.height);
+    out.right.fov = jittered(out.right.fov, s.jitter, s.width, s.height);
+    out.jitter = s.jitter;
     return out;
+}
+
+Fov jittered(const Fov& fov, glm::dvec2 pixels, std::uint32_t width, std::uint32_t height) {
+    double dx = pixels.x * (fov.right - fov.left) / width;
+    double dy = pixels.y * (fov.up - fov.down) / height;   // image y runs down, the tangent up
+    return {fov.left + dx, fov.right + dx, fov.down - dy, fov.up - dy};
 }
 
 }  // namespace fg

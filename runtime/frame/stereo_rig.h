@@ -35,6 +35,7 @@ struct StereoViews {
     double pixel_tan = 0.0;        // tangent-plane size of one full-resolution pixel (x)
     double pixel_half_diagonal = 0.0;
     double ipd = 0.0;              // scene units
+    glm::dvec2 jitter{0.0};        // the eyes' sub-pixel jitter (StereoSettings::jitter)
 };
 
 struct StereoSettings {
@@ -42,7 +43,16 @@ struct StereoSettings {
     double ipd_m = 0.064;                      // metres
     double world_scale = 1.0;                  // scene units per metre
     double centre_margin_tan = 0.05;           // the centre eye sees this far past both eyes
+    // Sub-pixel jitter of both eyes' pixel grids, in pixels (x right, y down): each frame of an
+    // accumulated or temporally filtered picture samples other points inside its pixels. The eyes
+    // share one phase, so stereo reuse still finds the same points in both; the centre eye of stereo
+    // reprojection, which only proves space empty, is never jittered.
+    glm::dvec2 jitter{0.0};
 };
+
+// The frustum of `fov` moved by `pixels` (x right, y down) of a `width` x `height` image: every
+// pass that makes or projects rays through a view's frustum then agrees on the jittered rays.
+Fov jittered(const Fov& fov, glm::dvec2 pixels, std::uint32_t width, std::uint32_t height);
 
 StereoViews make_stereo_views(const HeadPose& head, const Fov& left, const Fov& right, const StereoSettings& s);
 

@@ -80,6 +80,20 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
     return out;
 }
 
+void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs) {
+    const std::vector<std::byte>& beauty = aovs.at(beauty_index());
+    sum.resize(beauty.size() / 2, 0.0f);
+    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += half_at(beauty, i);
+}
+
+void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum, std::uint32_t samples) {
+    std::vector<std::byte>& beauty = aovs.at(beauty_index());
+    for (std::size_t i = 0; i < sum.size() && 2 * i < beauty.size(); ++i) {
+        Imath::half h(sum[i] / static_cast<float>(samples));
+        std::memcpy(beauty.data() + 2 * i, &h, 2);
+    }
+}
+
 double tonemap_beauty(double c) {
     // The ACES fit of post_effects.glsl's fg_tonemap, after its exposure (the beauty carries it).
     return std::clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);

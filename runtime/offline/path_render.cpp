@@ -9,6 +9,7 @@
 #include <stb/stb_image_write.h>
 
 #include "frame_record.h"
+#include "jittered_samples.h"
 #include "path_params.h"
 #include "progress_bar.h"
 #include "supersample.h"
@@ -21,6 +22,9 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     FrameSettings f;
     f.width = s.width * s.supersample;
     f.height = s.height * s.supersample;
+    // Every sample hits by the output pixel: the same fractal as 1 spp, only less aliased.
+    f.detail_scale = s.supersample / s.detail;
+    f.taa = s.taa;
     f.stereo = s.stereo;
     f.projection = s.projection;
     f.cone_levels = s.cone_levels;
@@ -53,8 +57,12 @@ std::string settings_fingerprint(const PathRenderSettings& s) {
     // count_evaluations is left out: it changes the work counted, not the pixels.
     std::string format = output_format_name(s.format);
     if (s.format == OutputFormat::Exr) format += std::string("-") + exr_compression_name(s.compression);
-    return fmt::format("{} {} {}x{} ss{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
-                       stereo_mode_name(s.stereo), s.width, s.height, s.supersample, s.cone_levels, s.ipd_m, knobs, format);
+    std::string samples = s.samples > 1 ? fmt::format(" samples{}", s.samples) : "";
+    if (s.detail != 1.0) samples += fmt::format(" detail{}", s.detail);
+    if (s.taa) samples += " taa";
+    return fmt::format("{} {} {}x{} ss{}{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
+                       stereo_mode_name(s.stereo), s.width, s.height, s.supersample, samples, s.cone_levels, s.ipd_m,
+                       knobs, format);
 }
 
 std::string frame_image_path(const std::string& dir, int frame, OutputFormat format) {
@@ -64,6 +72,13 @@ std::string frame_image_path(const std::string& dir, int frame, OutputFormat for
 PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath path, PathRenderSettings settings)
     : path_(std::move(path)), settings_(std::move(settings)) {
     if (settings_.supersample < 1 || settings_.supersample > 8) throw std::runtime_error("supersampling is 1 to 8");
+    if (settings_.samples < 1 || settings_.samples > kMaxSamples)
+        throw std::runtime_error(fmt::format("--samples is 1 to {}", kMaxSamples));
+    if (settings_.samples > 1 && settings_.projection != Projection::Perspective)
+        throw std::runtime_error("--samples jitters a perspective frustum; panoramas take --supersample");
+    if (settings_.taa && settings_.projection != Projection::Perspective)
+        throw std::runtime_error("--taa is for perspective frames, as a headset sees them");
+    if (settings_.taa && settings_.samples > 1) throw std::runtime_error("--taa and --samples both jitter the rays: choose one");
     StereoSettings stereo;
     stereo.ipd_m = settings_.ipd_m;
     renderer_ = std::make_unique<HeadlessRenderer>(ctx, pack, frame_settings(settings_), stereo);
@@ -78,11 +93,11 @@ OfflineFrame PathRenderer::render_frame(int frame) {
     FrameExecutor& executor = renderer_->executor();
     for (const auto& [name, value] : s.params)
         if (const ManifestParam* p = executor.manifest().find_param(name)) executor.set_param(name, keyed_param_value(*p, value));
-    RenderedFrame r = renderer_->render(s.head, s.time, static_cast<std::uint32_t>(frame));
+    RenderedFrame r = render_samples(*renderer_, s.head, s.time, static_cast<std::uint32_t>(frame), settings_.samples);
     std::uint64_t evaluations = 0;
     for (const auto& [_, n] : r.stats.evaluations) evaluations += n;
     double samples = (is_mono(settings_.projection) ? 1.0 : 2.0) * settings_.width * settings_.height *
-                     settings_.supersample * settings_.supersample;
+                     settings_.supersample * settings_.supersample * settings_.samples;
     last_evaluations_ = static_cast<double>(evaluations) / samples;
     std::uint32_t ss = settings_.supersample;
     OfflineFrame out;

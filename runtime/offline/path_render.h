@@ -20,6 +20,9 @@ struct PathRenderSettings {
     StereoMode stereo = StereoMode::PerEye;   // perspective and equirect; ODS always marches per pixel
     std::uint32_t width = 512, height = 256;  // output size per eye
     std::uint32_t supersample = 1;            // samples per output pixel along each axis
+    std::uint32_t samples = 1;                // jittered frames averaged per frame (perspective)
+    double detail = 1.0;                      // the hit threshold is 1 / detail of an output pixel
+    bool taa = false;                         // temporal anti-aliasing, history from frame to frame
     std::uint32_t cone_levels = 5;
     double ipd_m = 0.064;
     std::map<std::string, double> knobs;

@@ -10,6 +10,7 @@
 #include "command_outcome.h"
 #include "frame/headless_renderer.h"
 #include "graph/scene_settings.h"
+#include "offline/jittered_samples.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
 
@@ -48,6 +49,12 @@ int render(const RenderOptions& o) {
         frame.lens_mask = o.lens_mask;
         frame.foveation = o.foveation;
         frame.tile_dispatch = !o.whole_dispatch;
+        frame.detail_scale = 1.0 / o.detail;
+        frame.taa = o.taa;
+        if (o.taa && o.samples > 1) {
+            fmt::print(stderr, "fgplay: --taa and --samples both jitter the rays: choose one\n");
+            return 2;
+        }
         const SceneSettings& scene = pack->manifest.scene;
         StereoSettings stereo;
         stereo.ipd_m = o.ipd_m;
@@ -64,7 +71,7 @@ int render(const RenderOptions& o) {
         // A CPU rasteriser compiles each pipeline at its first dispatch: time the frames after one.
         if (o.time_passes) renderer.render(head, o.time, 0);
         for (int f = 0; f < o.frames; ++f) {
-            RenderedFrame r = renderer.render(head, o.time + f / 90.0, static_cast<std::uint32_t>(f));
+            RenderedFrame r = render_samples(renderer, head, o.time + f / 90.0, static_cast<std::uint32_t>(f), o.samples);
             std::string suffix = o.frames > 1 ? fmt::format("_{:04}", f) : "";
             auto path = [&](const std::string& name) { return (std::filesystem::path(o.out) / (name + suffix + ".png")).string(); };
             write_png(path("left"), r.left);
@@ -84,7 +91,8 @@ int render(const RenderOptions& o) {
                     list += fmt::format("{}{} {:.2f}", list.empty() ? "" : ", ", group, static_cast<double>(n) / (2.0 * o.width * o.height));
                 return list;
             };
-            fmt::print("frame {}: {} stereo {}x{} per eye; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height,
+            std::string samples = o.samples > 1 ? fmt::format(", {} samples summed", o.samples) : "";
+            fmt::print("frame {}: {} stereo {}x{} per eye{}; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height, samples,
                        times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
             if (o.time_passes) print_pass_times(r.stats.gpu_ms);
             if (frame.count_evaluations) {

@@ -26,6 +26,9 @@ struct RenderOptions {
     std::string shard;               // I/N
     Projection projection = Projection::Perspective;
     std::uint32_t supersample = 1;
+    std::uint32_t samples = 1;       // jittered frames averaged per picture (offline/jittered_samples.h)
+    double detail = 1.0;             // the hit threshold and normal taps: 1 / detail of an output pixel
+    bool taa = false;                // temporal anti-aliasing (with --frames or --path: history carried)
     OutputFormat format = OutputFormat::Png;
     ExrCompression compression = ExrCompression::Zip;
     bool resume = false;

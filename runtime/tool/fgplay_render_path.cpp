@@ -37,6 +37,12 @@ int render_path(const RenderOptions& o) {
         fmt::print(stderr, "fgplay: {}\n", error);
         return 2;
     }
+    if (o.taa && (!o.shard.empty() || o.resume)) {
+        // Each frame blends the ones before it: a shard or a resumed run would start without them.
+        fmt::print(stderr, "fgplay: --taa carries history from frame to frame: render the range in one run, without "
+                           "--shard or --resume\n");
+        return 2;
+    }
     if (!o.shard.empty()) {
         int index = 0, count = 1;
         if (!parse_shard(o.shard, index, count, error)) {
@@ -51,6 +57,9 @@ int render_path(const RenderOptions& o) {
     s.width = o.width;
     s.height = o.height;
     s.supersample = o.supersample;
+    s.samples = o.samples;
+    s.detail = o.detail;
+    s.taa = o.taa;
     s.cone_levels = o.cone_levels;
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;
@@ -61,9 +70,10 @@ int render_path(const RenderOptions& o) {
         vk::Context ctx(render_context_options(o.validation, o.device));
         PathRenderer renderer(ctx, *pack, *path, s);
         if (o.describe) fmt::print("{}", renderer.describe());
-        fmt::print("device: {}\n{} frames {}:{} of {} ({:.3g} fps path), {} {}x{} per eye, supersampling {}, {}\n",
+        fmt::print("device: {}\n{} frames {}:{} of {} ({:.3g} fps path), {} {}x{} per eye, supersampling {}, {} samples, {}\n",
                    ctx.device_name(), range->size(), range->begin, range->end, path->frame_count(), path->fps(),
-                   projection_name(s.projection), s.width, s.height, s.supersample, output_format_name(s.format));
+                   projection_name(s.projection), s.width, s.height, s.supersample, s.samples,
+                   output_format_name(s.format));
         std::fflush(stdout);
         PathRun run{o.out, *range, job_fingerprint(o, s), o.resume, o.progress};
         PathRunResult result = run_path(renderer, run);

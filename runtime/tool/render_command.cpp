@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "frame/frame_arguments.h"
+#include "offline/jittered_samples.h"
 
 namespace fg::fgplay {
 
@@ -23,6 +24,19 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_option("--path", r.path, "render a camera path (docs/camera-path.md) to DIR/frame_NNNNNN.png")->check(CLI::ExistingFile);
     render->add_option("--projection", c.projection, "with --path: perspective | equirect | ods")->capture_default_str();
     render->add_option("--supersample", r.supersample, "with --path: samples per pixel along each axis (1-8)")->capture_default_str();
+    render->add_option("--samples", r.samples,
+                       "jittered samples per pixel, averaged in linear light: the --supersample picture of as many "
+                       "samples in the memory of one frame (perspective)")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, kMaxSamples));
+    render->add_option("--detail", r.detail,
+                       "detail level: the hit threshold and normal taps are 1/D of an output pixel, at any sampling "
+                       "(2: finer detail, slower; 0.5: coarser, faster)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.125, 8.0));
+    render->add_flag("--taa", r.taa,
+                     "temporal anti-aliasing as a headset runs it: jittered rays every frame, blended into a history "
+                     "per eye (static scenes; the frames of --frames N or --path carry it from one to the next)");
     render->add_option("--format", c.format,
                        "with --path: png | png16 (16-bit, from the HDR beauty) | exr (OpenEXR with the beauty and "
                        "passes for compositing)")

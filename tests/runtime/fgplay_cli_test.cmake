@@ -31,6 +31,21 @@ expect_failure("an unknown output format" "--format is png, png16 or exr, not 't
                --path ${SOURCE}/docs/mandelbulb_flight.json --format tiff --out ${WORK}/x)
 expect_failure("an output format without a path" "go with --path" ${FGPLAY} render ${WORK}/bulb.fgpack --format exr
                --out ${WORK}/x)
+expect_failure("no samples" "--samples: Value 0 not in range" ${FGPLAY} render ${WORK}/bulb.fgpack --samples 0
+               --out ${WORK}/x)
+expect_failure("samples of a panorama" "panoramas take --supersample" ${FGPLAY} render ${WORK}/bulb.fgpack
+               --path ${SOURCE}/docs/mandelbulb_flight.json --projection equirect --samples 4 --out ${WORK}/x --no-progress)
+
+# Jittered samples of a still: the picture differs from one sample's, and the line says how many.
+execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 32x32 --samples 4 --out ${WORK}/samples
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 32x32 --out ${WORK}/one_sample
+                RESULT_VARIABLE rc1 OUTPUT_VARIABLE out1 ERROR_VARIABLE err1)
+file(SHA256 ${WORK}/samples/left.png four)
+file(SHA256 ${WORK}/one_sample/left.png one)
+if(NOT rc EQUAL 0 OR NOT rc1 EQUAL 0 OR NOT out MATCHES "32x32 per eye, 4 samples summed" OR four STREQUAL one)
+  message(FATAL_ERROR "fgplay render --samples 4 failed, said no sample count, or wrote the one-sample picture: ${out}${err}")
+endif()
 
 # A camera path to OpenEXR (tests/runtime/exr_output_test.cpp reads the files back).
 execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --path ${SOURCE}/docs/mandelbulb_flight.json --frames 0:1

@@ -205,8 +205,21 @@ bool fg_dispatch_takes(int view, ivec2 pixel, int stride)
     return (fg_periphery(view, pixel) >= 1.0) == (stride == 2);
 }
 
-// The hit threshold's footprint in full-resolution pixels: 2 where a pixel stands for its block.
-float fg_footprint(int view, ivec2 pixel)
+// tan of the half-angle of one output pixel: the hit rule (d < epsilon * this * t) and the normal
+// taps. The same in the fovea and the periphery, and at any march resolution.
+float fg_detail_tan()
 {
-    return fg_periphery(view, pixel) >= 1.0 ? 2.0 : 1.0;
+    return tan(min(fg_frame.detail_cone, 1.5));
+}
+
+// The final image holds display-encoded (sRGB) values: a pass that filters or blends them decodes
+// to linear light first (mixing encoded values darkens every edge between light and dark).
+vec3 fg_srgb_to_linear(vec3 c)
+{
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+}
+
+vec3 fg_linear_to_srgb(vec3 c)
+{
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
 }

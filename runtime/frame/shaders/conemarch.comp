@@ -74,7 +74,8 @@ struct FgFineRay {
     vec3 ro;
     vec3 rd;
     vec2 range;
-    float cone;
+    float cone;          // the marched pixel's cone, which its samples certify empty
+    float hit_tan;       // the output pixel's: the hit rule
     float t;
     float bound;         // where the pixel's cone first touched (the centre eye: its steps keep the cone safe)
     float covered;       // an eye: how far the balls of its samples so far prove the pixel's cone empty
@@ -111,7 +112,10 @@ FgFineRay fg_fine_begin(ivec2 pixel, ivec2 full)
     r.rd = fg_ray_dir(pc.view, uv);
     float parent = fg_parent_bound(pixel, full, r.ro, r.rd);
     r.range = fg_bounds_interval(r.ro, r.rd, 0.0);
-    r.cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
+    // A periphery pixel stands for its 2x2 block when certifying its cone, but it hits by the output
+    // pixel like every other, so the periphery shows the same fractal as the fovea.
+    r.cone = fg_cone_tan(0) * (pc.stride == 2 ? 2.0 : 1.0);
+    r.hit_tan = fg_detail_tan();
     // The parent's cone holds this pixel's cone, and the previous frame may prove more of it.
     r.covered = fg_reused_bound(pc.view, 0, r.ro, r.rd, r.cone, parent, r.range.y);
     r.t = max(r.covered, r.range.x);
@@ -180,7 +184,7 @@ void fg_fine_step(inout FgFineRay r)
         if (r.bound > r.range.y && d <= FG_CONE_STOP * radius) r.bound = r.t;
         cone_safe = r.bound > r.range.y;
     }
-    if (d < FG_EPSILON * radius) {
+    if (d < FG_EPSILON * r.hit_tan * r.t) {
         r.hit = true;
         r.marching = false;
         return;

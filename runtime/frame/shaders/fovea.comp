@@ -3,8 +3,8 @@
 //! when: always
 //! include: dispatch_tiles.glsl
 // Fixed foveation's fill. Beyond the fovea only one pixel of each 2x2 block, the even one, was
-// marched and shaded (fg_dispatch_takes); this fills in the other three by bilinear interpolation between the marched
-// pixels around them, and across the band between fovea and periphery blends the full-resolution
+// marched and shaded (fg_dispatch_takes); this fills in the other three by bilinear interpolation
+// (in linear light) between the marched pixels around them, and across the band between fovea and periphery blends the full-resolution
 // image into the interpolated one, so no edge shows. Depth cannot be interpolated (hit or miss, and
 // two surfaces at a silhouette): a filled pixel takes the nearest hit among the marched pixels its
 // colour blends, a miss only where none of them hits. So a filled depth never lies behind the
@@ -48,12 +48,12 @@ void fg_fill(ivec2 lo, ivec2 offset, vec4 c[4], vec4 d)
         return;
     }
     vec2 f = vec2(offset) * 0.5;
-    vec4 color = mix(mix(c[0], c[1], f.x), mix(c[2], c[3], f.x), f.y);
+    vec3 color = mix(mix(c[0].rgb, c[1].rgb, f.x), mix(c[2].rgb, c[3].rgb, f.x), f.y);
     if (s < 1.0)
-        color = mix(imageLoad(fg_final, pixel), color, s);
+        color = mix(fg_srgb_to_linear(imageLoad(fg_final, pixel).rgb), color, s);
     else
         imageStore(fg_depth, pixel, vec4(fg_nearest_hit(d, f)));
-    imageStore(fg_final, pixel, color);
+    imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(color), 1.0));
 }
 
 // One invocation fills a 2x2 block's three odd pixels: its four corners are loaded once for all
@@ -69,7 +69,7 @@ void main()
     vec4 c[4];
     vec4 d;
     for (int i = 0; i < 4; ++i) {
-        c[i] = imageLoad(fg_final, corner[i]);
+        c[i] = vec4(fg_srgb_to_linear(imageLoad(fg_final, corner[i]).rgb), 1.0);
         d[i] = imageLoad(fg_depth, corner[i]).x;
     }
     fg_fill(lo, ivec2(1, 0), c, d);

@@ -69,8 +69,11 @@ struct GpuFrame {
     float seconds;           // scene time
     float world_scale;       // scene units per metre of the viewer
     float ipd;               // interpupillary distance in scene units
-    float unused_1;
-    float pixel_cone_tan;    // tangent of the half-diagonal of one full-resolution pixel
+    // The half-diagonal angle of one output pixel (radians): the hit threshold and the normal taps
+    // follow it at every march resolution, so supersampling, foveation and a reduced resolution
+    // change a picture's noise, never which fractal it shows.
+    float detail_cone;
+    float pixel_cone_tan;    // half-diagonal angle of one marched full-resolution pixel (radians)
     float pixel_tan;         // tangent per pixel
     float fovea_radius;      // in half image heights; 0: foveation off
     float fovea_blend;       // width of the band where fovea and periphery blend
@@ -84,8 +87,11 @@ struct GpuFrame {
     GpuView previous[2];
     uint reuse;
     uint shade_history;      // 1: the previous frame's shading holds for this one (FG_SHADE_HISTORY)
-    uint unused_3;
+    uint taa_history;        // 1: temporal anti-aliasing's history holds (the same static scene)
     uint unused_4;
+    // Sub-pixel jitter of the eyes' pixel grids (StereoSettings::jitter), in pixels, x right, y
+    // down: xy this frame's, zw the previous frame's (whose views are `previous`).
+    vec4 jitter;
 };
 
 // The scene's settings (set 0, binding 1): uniforms, so editing them never recompiles.
@@ -159,6 +165,10 @@ struct FoveaPush {
     int view;
 };
 
+struct TaaPush {
+    int view;
+};
+
 struct ProbePush {
     int count;
     float normal_step;
@@ -169,7 +179,7 @@ static_assert(sizeof(GpuView) == 96);
 static_assert(offsetof(GpuFrame, eye_size) == 288 && offsetof(GpuFrame, frame_index) == 304);
 static_assert(offsetof(GpuFrame, seconds) == 320 && offsetof(GpuFrame, pixel_cone_tan) == 336);
 static_assert(offsetof(GpuFrame, anchor_hi) == 352 && offsetof(GpuFrame, previous) == 384);
-static_assert(offsetof(GpuFrame, reuse) == 576 && sizeof(GpuFrame) == 592);
+static_assert(offsetof(GpuFrame, reuse) == 576 && offsetof(GpuFrame, jitter) == 592 && sizeof(GpuFrame) == 608);
 static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
 static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
 static_assert(offsetof(GpuScene, exposure) == 192 && sizeof(GpuScene) == 208);

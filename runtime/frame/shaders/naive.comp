@@ -25,7 +25,7 @@ struct FgNaiveRay {
     vec3 ro;
     vec3 rd;
     vec2 range;
-    float pixel_tan;
+    float hit_tan;       // the output pixel's: the hit rule
     float t;
     float closest;
     int i;
@@ -42,7 +42,7 @@ FgNaiveRay fg_naive_begin(ivec2 pixel, ivec2 size)
     r.ro = fg_ray_origin(pc.view, uv);
     r.rd = fg_ray_dir(pc.view, uv);
     r.range = fg_bounds_interval(r.ro, r.rd, 0.0);
-    r.pixel_tan = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
+    r.hit_tan = fg_detail_tan();
     r.t = r.range.x;
     r.closest = 1e30;
     r.i = 0;
@@ -57,7 +57,7 @@ void fg_naive_step(inout FgNaiveRay r)
     float d = fg_scene_distance(r.ro + r.rd * r.t) * FG_STEP_SCALE;
     fg_evaluations++;
     r.closest = min(r.closest, d);
-    if (d < FG_EPSILON * r.pixel_tan * r.t) {
+    if (d < FG_EPSILON * r.hit_tan * r.t) {
         r.hit = true;
         r.marching = false;
         return;

@@ -111,7 +111,7 @@ void main()
     r = fg_ray_dir(pc.view, uv);
     b = ro - C.origin.xyz;
     vec2 range = fg_bounds_interval(ro, r, 0.0);
-    float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
+    float cone = fg_detail_tan();
     float result = FG_MISS;
     float closest = FG_HUGE;
     uint evaluations = 0u;

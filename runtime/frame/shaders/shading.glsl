@@ -33,14 +33,14 @@ vec3 fg_normal_at(vec3 p, float h)
                              k.yxy * fg_scene_distance(p + k.yxy * h) + k.xxx * fg_scene_distance(p + k.xxx * h));
 }
 
-// The normal at a hit at distance t. The tap distance follows the pixel's footprint, so normals are
-// as sharp as the image. Its floor (an eye inside the fractal has t = 0) scales with the viewer
+// The normal at a hit at distance t. The tap distance follows the output pixel's footprint, so
+// normals are as sharp as the image shown, at any march resolution. Its floor (an eye inside the fractal has t = 0) scales with the viewer
 // (world scale in world_scale: a scene at 1e-6 is smaller than a fixed 1e-6) and stays above
 // float's spacing at p.
 vec3 fg_surface_normal(vec3 p, float t)
 {
     float floor_h = max(1e-6 * fg_frame.world_scale, 1e-6 * length(p));
-    return fg_normal_at(p, max(fg_cone_tan(0) * t, floor_h));
+    return fg_normal_at(p, max(fg_detail_tan() * t, floor_h));
 }
 
 struct FgShading {

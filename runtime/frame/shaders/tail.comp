@@ -26,7 +26,7 @@ void main()
     vec3 ro = fg_ray_origin(pc.view, uv);
     vec3 rd = fg_ray_dir(pc.view, uv);
     vec2 range = fg_bounds_interval(ro, rd, 0.0);
-    float cone = fg_cone_tan(0) * fg_footprint(pc.view, pixel);
+    float cone = fg_detail_tan();
     float t = item.t;
     float closest = item.closest;
     uint evaluations = 0u;

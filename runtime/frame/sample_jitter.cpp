@@ -1,0 +1,47 @@
+#include "sample_jitter.h"
+
+#include <cmath>
+
+namespace fg {
+
+namespace {
+
+double radical_inverse(std::uint32_t i, std::uint32_t base) {
+    double result = 0.0, digit = 1.0 / base;
+    for (; i > 0; i /= base, digit /= base) result += (i % base) * digit;
+    return result;
+}
+
+}  // namespace
+
+glm::dvec2 halton_offset(std::uint32_t k) { return {radical_inverse(k, 2) - 0.5, radical_inverse(k, 3) - 0.5}; }
+
+glm::dvec2 taa_jitter(std::uint64_t frame_index) {
+    static const std::vector<glm::dvec2> pattern = sample_pattern(16);
+    return pattern[frame_index % pattern.size()];
+}
+
+std::vector<glm::dvec2> sample_pattern(std::uint32_t n) {
+    if (n <= 1) return {glm::dvec2(0.0)};
+    std::vector<glm::dvec2> out;
+    const auto s = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(n))));
+    if (s * s != n) {
+        // Index 0 is (0, 0), a pixel's corner: start at 1, so the first sample sits inside.
+        for (std::uint32_t k = 1; k <= n; ++k) out.push_back(halton_offset(k));
+        return out;
+    }
+    std::vector<bool> taken(n, false);
+    // Halton points are dense: every cell is visited; the bound only guards the loop.
+    for (std::uint32_t k = 1; out.size() < n && k < 1000u * n; ++k) {
+        glm::dvec2 h = halton_offset(k) + 0.5;
+        auto x = static_cast<std::uint32_t>(h.x * s), y = static_cast<std::uint32_t>(h.y * s);
+        if (taken[y * s + x]) continue;
+        taken[y * s + x] = true;
+        out.push_back({(x + 0.5) / s - 0.5, (y + 0.5) / s - 0.5});
+    }
+    for (std::uint32_t c = 0; out.size() < n; ++c)
+        if (!taken[c]) out.push_back({(c % s + 0.5) / s - 0.5, (c / s + 0.5) / s - 0.5});
+    return out;
+}
+
+}  // namespace fg

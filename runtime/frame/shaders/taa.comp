@@ -1,0 +1,164 @@
+//! pass: taa
+//! needs: nothing
+//! when: always
+// Temporal anti-aliasing: each frame marches its rays through a jittered pixel grid (the eyes'
+// frusta move by a sub-pixel offset, GpuFrame.jitter), and this pass blends the frame's samples
+// into a per-eye history of the pictures before it, so a pixel converges towards the mean over its
+// area instead of one point of it. Per pixel:
+//
+// - the sample's hit point (or, for a miss, its direction) projects exactly into the previous
+//   frame's view: the scene is a static distance field, so that is where the pixel was;
+// - the history there is fetched with a Catmull-Rom filter (a bilinear fetch re-filters it on every
+//   frame of sub-pixel motion and blurs it away: 0.9-2.8 dB lost in the spike that measured this);
+// - it is rejected where the previous frame saw something clearly in front of the point, against
+//   its depth dilated by a 3x3 maximum: a fractal's depth varies inside a pixel, so a two-sided
+//   test rejects a few percent of a still frame's pixels every frame and they never converge;
+// - it is clipped towards the current 3x3 neighbourhood's mean, onto its YCoCg variance box (what
+//   the history shows that the current samples cannot have is ghosting, or a change): 1.5 standard
+//   deviations still, so a still head converges (1 clipped it to 38.8 dB of 16 samples, 1.5 to
+//   42.8, the bulb at 96²), 1 at a pixel of motion per frame and beyond, where lag shows;
+// - and blended with the current sample by a weight that grows with the motion (0.1 still, 0.2 at a
+//   pixel per frame and beyond), so a moving picture carries less lag and resampling blur.
+//
+// The history holds the tone-mapped colour in linear light, so it converges to the mean of the
+// samples as --samples averages them; working after the tone map keeps one bright highlight from
+// dominating a neighbourhood.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 3, rgba8) uniform readonly image2D fg_jittered;     // this frame, display-encoded
+layout(set = 0, binding = 4, r32f) uniform readonly image2D fg_depth;         // this frame's hit distances
+layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_history;    // the previous frame's result, linear
+layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_history_depth;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_resolved;  // this frame's result, linear
+layout(set = 0, binding = 8, r32f) uniform writeonly image2D fg_resolved_depth;
+layout(set = 0, binding = 9, rgba8) uniform writeonly image2D fg_final;       // the result, display-encoded
+layout(push_constant) uniform FgTaaPush { TaaPush pc; };
+
+const float kStillBlend = 0.1;     // the weight of a new sample with a still head
+const float kMovingBlend = 0.2;    // ... at one pixel of motion per frame and beyond
+const float kInFront = 0.95;       // history is rejected where the previous depth is nearer than this
+const float kStillSigmas = 1.5;    // the clip box: mean +- this many standard deviations, still
+const float kMovingSigmas = 1.0;   // ... at one pixel of motion per frame and beyond
+
+vec3 fg_ycocg(vec3 c)
+{
+    return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+
+vec3 fg_rgb(vec3 y)
+{
+    return vec3(y.x + y.y - y.z, y.x + y.z, y.x - y.y - y.z);
+}
+
+// A pixel of this frame as displayed (sRGB-encoded), clamped to the image.
+vec3 fg_current(ivec2 pixel, ivec2 size)
+{
+    return imageLoad(fg_jittered, clamp(pixel, ivec2(0), size - 1)).rgb;
+}
+
+// The history at a continuous position (pixel units, texel centres at i + 0.5): a Catmull-Rom
+// filter over the 4x4 texels around it without the four corners, whose weights are the smallest
+// (as Jimenez's filter for Call of Duty leaves them out), renormalised; clamped at the image's edges.
+vec3 fg_history_at(vec2 at, ivec2 size)
+{
+    vec2 s = at - 0.5;
+    ivec2 base = ivec2(floor(s));
+    vec2 f = s - vec2(base);
+    vec2 w[4];
+    w[0] = f * (-0.5 + f * (1.0 - 0.5 * f));
+    w[1] = 1.0 + f * f * (-2.5 + 1.5 * f);
+    w[2] = f * (0.5 + f * (2.0 - 1.5 * f));
+    w[3] = f * f * (-0.5 + 0.5 * f);
+    vec3 sum = vec3(0.0);
+    float weight = 0.0;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            if ((i == 0 || i == 3) && (j == 0 || j == 3)) continue;
+            ivec2 texel = clamp(base + ivec2(i - 1, j - 1), ivec2(0), size - 1);
+            float wij = w[i].x * w[j].y;
+            sum += wij * imageLoad(fg_history, texel).rgb;
+            weight += wij;
+        }
+    return max(sum / weight, vec3(0.0));
+}
+
+// The farthest depth the previous frame saw around a texel (a miss is farther than anything).
+float fg_farthest_before(ivec2 texel, ivec2 size)
+{
+    float farthest = 0.0;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            float d = imageLoad(fg_history_depth, clamp(texel + ivec2(i, j), ivec2(0), size - 1)).x;
+            farthest = max(farthest, d < 0.0 ? 1e30 : d);
+        }
+    return farthest;
+}
+
+// Where this pixel's sample was in the previous frame's image, in its unjittered pixel coordinates
+// (texel centres at i + 0.5), or a negative x when it was behind that view.
+vec2 fg_previous_position(GpuView o, vec3 towards, ivec2 size)
+{
+    float z = dot(towards, o.forward.xyz);
+    if (z <= 0.0) return vec2(-1.0);
+    vec2 tangent = vec2(dot(towards, o.right.xyz), dot(towards, o.up.xyz)) / z;
+    vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
+                   (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
+    return uv * vec2(size) + fg_frame.jitter.zw;
+}
+
+// Clips q towards the box's centre onto the box (Playdead's clip: keeps the history's hue where a
+// clamp of each channel would not).
+vec3 fg_clip(vec3 q, vec3 centre, vec3 extent)
+{
+    vec3 v = q - centre;
+    vec3 a = abs(v / max(extent, vec3(1e-5)));
+    float m = max(a.x, max(a.y, a.z));
+    return m > 1.0 ? centre + v / m : q;
+}
+
+void main()
+{
+    ivec2 size = ivec2(fg_frame.eye_size);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    vec3 current = fg_srgb_to_linear(fg_current(pixel, size));
+    float t = imageLoad(fg_depth, pixel).x;
+    imageStore(fg_resolved_depth, pixel, vec4(t));
+    vec3 result = current;
+    if (fg_frame.taa_history != 0u && !fg_outside_lens(pc.view, pixel)) {
+        // The neighbourhood's colour statistics, for the clip box.
+        vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+        for (int j = -1; j <= 1; ++j)
+            for (int i = -1; i <= 1; ++i) {
+                vec3 y = fg_ycocg(fg_srgb_to_linear(fg_current(pixel + ivec2(i, j), size)));
+                m1 += y;
+                m2 += y * y;
+            }
+        m1 /= 9.0;
+        vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
+
+        GpuView o = fg_frame.previous[pc.view];
+        vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+        vec3 rd = fg_ray_dir(pc.view, uv);
+        vec3 p = fg_ray_origin(pc.view, uv) + rd * t;
+        // A miss is a point at infinity: only its direction moves it.
+        vec3 towards = t < 0.0 ? rd : p - o.origin.xyz;
+        vec2 q = fg_previous_position(o, towards, size);
+        vec2 at = q - fg_frame.jitter.xy;
+        bool seen = q.x >= 0.0 && all(greaterThanEqual(at, vec2(0.0))) && all(lessThan(at, vec2(size)));
+        if (seen) {
+            float here = t < 0.0 ? 1e30 : length(towards);
+            seen = fg_farthest_before(ivec2(floor(at)), size) >= kInFront * here;
+        }
+        if (seen) {
+            float motion = length(at - (vec2(pixel) + 0.5));
+            float sigmas = mix(kStillSigmas, kMovingSigmas, clamp(motion, 0.0, 1.0));
+            vec3 history = fg_rgb(fg_clip(fg_ycocg(fg_history_at(at, size)), m1, sigmas * sigma));
+            float blend = mix(kStillBlend, kMovingBlend, clamp(motion, 0.0, 1.0));
+            result = mix(history, current, blend);
+        }
+    }
+    vec3 rgb = max(result, vec3(0.0));
+    imageStore(fg_resolved, pixel, vec4(rgb, 1.0));
+    imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(rgb), 1.0));
+}
