@@ -13,6 +13,7 @@
 #include "desktop/pack_source.h"
 #include "desktop/window_presenter.h"
 #include "frame/frame_governor.h"
+#include "frame/sample_jitter.h"
 #include "frame/trade_off_ladder.h"
 #include "locomotion/collision_witness.h"
 #include "locomotion/viewer_step.h"
@@ -80,6 +81,7 @@ int view(const ViewOptions& o) {
         frame.width = o.width;
         frame.height = o.height;
         frame.stereo = o.stereo;
+        frame.taa = o.taa;
         StereoSettings stereo;
         stereo.width = o.width;
         stereo.height = o.height;
@@ -134,6 +136,8 @@ int view(const ViewOptions& o) {
         auto last = std::chrono::steady_clock::now();
         std::string status;
         int frames = 0;
+        FrameStats stats;
+        bool was_converged = false;
         while (!presenter.should_close() && (o.frames == 0 || frames < o.frames)) {
             glfwPollEvents();
             auto now = std::chrono::steady_clock::now();
@@ -193,15 +197,24 @@ int view(const ViewOptions& o) {
             }
 
             stereo.world_scale = viewer.world_scale;
+            const bool taa = playing.executor->graph().taa;
+            stereo.jitter = taa ? taa_jitter(static_cast<std::uint64_t>(frames)) : glm::dvec2(0.0);
             StereoViews views = make_stereo_views(head, fov_of(scene), fov_of(scene), stereo);
             // The frame graph's settings: the viewer's with what the pack decides filled in (a double
             // pack's relative origins, the scene's foveation where the viewer says "as the scene says").
             playing.executor->set_frame(make_gpu_frame(views, playing.executor->graph().settings, frames / 60.0, viewer.world_scale,
                                                        static_cast<std::uint32_t>(frames)));
             playing.executor->set_scene(viewer.scene);
-            FrameStats stats = playing.executor->run();
+            // A still view that has refined to 16 samples per pixel is shown as it is: no frame runs.
+            const bool converged = taa && playing.executor->frame().still_frames >= kRefinedFrames;
+            if (!converged) stats = playing.executor->run();
+            if (converged && !was_converged) {
+                fmt::print("fgplay view: still, refined to {} samples per pixel; idle until the view moves\n", kRefinedFrames);
+                std::fflush(stdout);
+            }
+            was_converged = converged;
             ++frames;
-            if (governor) {
+            if (governor && !converged) {
                 auto gpu = stats.gpu_ms.find("frame");
                 if (gpu != stats.gpu_ms.end() && governor->observe(gpu->second, o.budget_ms)) {
                     // A new level takes effect from the next frame: new sizes and pipelines.

@@ -31,6 +31,9 @@ struct ViewOptions {
     // Pareto front `fgplay bench` measured (its results.json).
     double budget_ms = 0.0;
     std::string trade_offs;
+    // Temporal anti-aliasing: jittered rays blended into a history; a still view refines to 16
+    // samples per pixel and then renders nothing until it moves.
+    bool taa = false;
 };
 
 int view(const ViewOptions& options);

@@ -19,6 +19,9 @@ void add_view_command(CLI::App& app, ViewCommand& c) {
     c.command->add_option("--autopilot", c.options.autopilot, "fly forward at this throttle, 1 = normal speed (tests)");
     c.command->add_option("--press", c.options.press,
                           "scripted keys (tests): KEY@FIRST-LAST frames held, KEY one of left, right, shrink, grow");
+    c.command->add_flag("--taa", c.options.taa,
+                        "temporal anti-aliasing: jittered rays blended into a history; a still view refines to 16 "
+                        "samples per pixel, then idles");
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--budget-ms", c.options.budget_ms,

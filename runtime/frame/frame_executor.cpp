@@ -1,6 +1,7 @@
 #include "frame_executor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fmt/format.h>
 #include <stdexcept>
@@ -13,6 +14,27 @@
 namespace fg {
 
 namespace {
+
+// The frustum edges of a view without its jitter (stereo_rig.h: jittered()).
+glm::vec4 unjittered_fov(const GpuView& v, glm::vec2 jitter, glm::uvec2 size) {
+    const float dx = jitter.x * (v.tan_fov.y - v.tan_fov.x) / static_cast<float>(size.x);
+    const float dy = jitter.y * (v.tan_fov.w - v.tan_fov.z) / static_cast<float>(size.y);
+    return {v.tan_fov.x - dx, v.tan_fov.y - dx, v.tan_fov.z + dy, v.tan_fov.w + dy};
+}
+
+// Whether both eyes of `frame` look from where and where `previous` (jittered by
+// `previous_jitter`) looked: a still head, whatever the jitter.
+bool same_view_unjittered(const GpuFrame& frame, const GpuView (&previous)[2], glm::vec2 previous_jitter) {
+    const glm::vec2 jitter(frame.jitter.x, frame.jitter.y);
+    for (int eye = 0; eye < 2; ++eye) {
+        const GpuView &a = frame.views[eye], &b = previous[eye];
+        if (a.origin != b.origin || a.right != b.right || a.up != b.up || a.forward != b.forward) return false;
+        const glm::vec4 fa = unjittered_fov(a, jitter, frame.eye_size), fb = unjittered_fov(b, previous_jitter, frame.eye_size);
+        const float tolerance = 1e-5f * (std::abs(fa.y - fa.x) + std::abs(fa.w - fa.z));
+        if (glm::any(glm::greaterThan(glm::abs(fa - fb), glm::vec4(tolerance)))) return false;
+    }
+    return true;
+}
 
 VkDescriptorType descriptor_type(const std::string& kind) {
     if (kind == "uniform_buffer") return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
@@ -291,6 +313,10 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     frame_data_.reuse = graph_.reuse && history_valid_ ? 1u : 0u;
     frame_data_.shade_history = graph_.shade_history && history_valid_ ? 1u : 0u;
     frame_data_.taa_history = graph_.taa && history_valid_ ? 1u : 0u;
+    frame_data_.still_frames = 0u;
+    if (frame_data_.taa_history && same_view_unjittered(frame_data_, previous_views_, previous_jitter_)) {
+        frame_data_.still_frames = still_frames_ + 1;
+    }
     frame_data_.jitter.z = previous_jitter_.x;
     frame_data_.jitter.w = previous_jitter_.y;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
@@ -305,6 +331,7 @@ void FrameExecutor::forget_history() {
     frame_data_.reuse = 0u;
     frame_data_.shade_history = 0u;
     frame_data_.taa_history = 0u;
+    frame_data_.still_frames = 0u;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
 }
@@ -476,6 +503,7 @@ FrameStats FrameExecutor::run() {
     previous_views_[0] = frame_data_.views[FG_VIEW_LEFT];
     previous_views_[1] = frame_data_.views[FG_VIEW_RIGHT];
     previous_jitter_ = {frame_data_.jitter.x, frame_data_.jitter.y};
+    still_frames_ = frame_data_.still_frames;
     history_valid_ = true;
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();

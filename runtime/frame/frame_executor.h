@@ -59,6 +59,9 @@ public:
     void set_scene(const GpuScene& scene);
     // A parameter may change the distance: the previous frame's levels no longer hold.
     bool set_param(const std::string& name, const Constant& value);
+    // The previous frame no longer shows the points this one will (a looping scene wrapped the
+    // head): nothing is taken from it (cross-frame reuse, shading history, temporal anti-aliasing).
+    void forget_history();
 
     FrameStats run();
     // An image as the last frame left it; "<name>.previous" is a history image's frame before.
@@ -103,6 +106,7 @@ private:
     GpuScene scene_data_{};
     GpuView previous_views_[2]{};   // the eyes of the last frame run
     glm::vec2 previous_jitter_{0.0f};   // and their jitter
+    std::uint32_t still_frames_ = 0;    // frames in a row that saw the last frame's view (GpuFrame)
     bool history_valid_ = false;
     // The tile lists of the graph's tile buffers, remade only when what places them changes (at a
     // headset's resolution a list has tens of thousands of tiles) and written before the next frame.
@@ -118,7 +122,6 @@ private:
     };
     std::uint64_t frames_to_fill_ = 1;
     void update_tile_lists();
-    void forget_history();
     std::map<std::string, TileList> tile_lists_;   // by buffer name
     std::unique_ptr<vk::Buffer> no_tiles_;         // bound where a pass dispatches no tiles
 };

@@ -15,6 +15,9 @@ namespace fg {
 // so every prefix covers the pixel evenly (a picture stopped early is not lopsided).
 std::vector<glm::dvec2> sample_pattern(std::uint32_t n);
 
+// Frames a still view takes to average each of taa_jitter's 16 offsets once.
+inline constexpr std::uint32_t kRefinedFrames = 16;
+
 // Temporal anti-aliasing's offset for a frame: the 16 samples of sample_pattern(16) (a 4x4 grid),
 // one per frame, repeating.
 glm::dvec2 taa_jitter(std::uint64_t frame_index);

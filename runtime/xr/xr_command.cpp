@@ -29,6 +29,8 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
                                  "no OpenXR actions: gaze flight only");
     c.command->add_flag_function("--no-wrap", [&c](std::int64_t) { c.options.wrap = false; },
                                  "keep absolute coordinates in looping scenes (to compare)");
+    c.command->add_flag("--taa", c.options.taa,
+                        "temporal anti-aliasing: jittered rays blended into a history per eye (static scenes)");
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");

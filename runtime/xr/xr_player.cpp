@@ -12,6 +12,7 @@
 
 #include "frame/frame_executor.h"
 #include "frame/image_output.h"
+#include "frame/sample_jitter.h"
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
 #include "locomotion/viewer_step.h"
@@ -99,6 +100,11 @@ public:
         frame_.headset_lens = instance_.has_visibility_mask();   // update_lens_masks puts it into the frames
         frame_.cone_levels = o.cone_levels;
         frame_.knobs = o.knobs;
+        frame_.taa = o.taa;
+        // The swapchain's pixels are the output's: a render size of its own marches finer or coarser
+        // rays that still hit by them.
+        base_detail_scale_ = frame_.detail_scale =
+            static_cast<double>(base_width_) / std::max(views[0].recommendedImageRectWidth, views[1].recommendedImageRectWidth);
         if (o.governor) apply(governor_->current());
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
@@ -285,6 +291,12 @@ private:
             return false;
         }
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
+        // Temporal anti-aliasing jitters the rays of every frame; a wrap moves the head by whole
+        // periods, where the previous frame's view no longer shows the same points.
+        const bool taa = executor_ && executor_->graph().taa;
+        stereo_.jitter = taa ? taa_jitter(stats_.frames) : glm::dvec2(0.0);
+        if (taa && step_->wraps() != wraps_seen_) executor_->forget_history();
+        wraps_seen_ = step_->wraps();
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
         if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {
             rebuild_ = false;
@@ -375,6 +387,7 @@ private:
         full.stereo = options_.stereo;
         full.cone_levels = options_.cone_levels;
         full.knobs = options_.knobs;
+        full.detail_scale = base_detail_scale_;
         frame_ = settings_at_level(full, level, base_width_, base_height_);
     }
 
@@ -452,6 +465,8 @@ private:
     std::unique_ptr<FrameGovernor> governor_;
     std::uint32_t base_width_ = 0, base_height_ = 0;
     bool rebuild_ = false;
+    int wraps_seen_ = 0;
+    double base_detail_scale_ = 1.0;   // the render size's pixels per swapchain pixel at level 0
     std::unique_ptr<CollisionWitness> witness_;
     SessionLifecycle lifecycle_;
     VisibilityMask masks_[2];

@@ -31,6 +31,7 @@ struct XrPlayOptions {
     bool controllers = true;             // controller input through OpenXR actions
     double controller_speed = 1.0;       // the trigger's full pull, as a throttle
     bool wrap = true;                    // wrap the head by whole periods in looping scenes
+    bool taa = false;                    // temporal anti-aliasing (static scenes)
     std::string record;                  // folder: each submitted frame's eyes as PNG, as fgplay render writes them
 };
 

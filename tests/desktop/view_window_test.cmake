@@ -23,6 +23,23 @@ if(CASE STREQUAL "keys")
   fg_test_passed()
   return()
 endif()
+if(CASE STREQUAL "taa")
+  # Temporal anti-aliasing with a still view: 16 frames refine it to 16 samples per pixel, then the
+  # viewer renders nothing until the view moves.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env MESA_SHADER_CACHE_DIR=${WORK}/mesa_cache
+                          ${XVFB_RUN} -a -s "-screen 0 320x240x24"
+                          ${FGPLAY} view ${PACK} --frames 24 --size 32x32 --taa --validation
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 240)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "Vulkan validation: 0 errors")
+    message(FATAL_ERROR "fgplay view --taa failed (${rc})")
+  endif()
+  if(NOT out MATCHES "still, refined to 16 samples per pixel; idle until the view moves")
+    message(FATAL_ERROR "a still view with --taa did not refine and idle")
+  endif()
+  fg_test_passed()
+  return()
+endif()
 if(CASE STREQUAL "governor")
   # A budget no frame can meet: the governor steps down the ladder of the benchmark's measured
   # front to its floor, says so, and the title shows the level.

@@ -121,6 +121,11 @@ elseif(CASE STREQUAL "a_runtime_recommending_a_different_size_for_each_eye_gets_
   list(APPEND env FG_XR_TEST_SIZE=96x96,80x112 FG_XR_TEST_COLOUR_PNGS=${WORK}/png)
   list(APPEND args --frames 3 --no-governor --record ${WORK}/png)
   set(expect_frames 3)
+elseif(CASE STREQUAL "temporal_anti_aliasing_shows_its_resolved_frames_in_the_headset")
+  # --taa: the eyes the runtime receives are the resolved frames fgplay wrote (its final images).
+  list(APPEND env FG_XR_TEST_COLOUR_PNGS=${WORK}/png)
+  list(APPEND args --frames 6 --no-governor --taa --record ${WORK}/png)
+  set(expect_frames 6)
 elseif(CASE STREQUAL "a_scene_that_asks_for_foveation_is_foveated_in_the_headset")
   # The pack's scene has a foveation block and the user says nothing: its frames carry the fovea
   # the frame graph was built with (a frame without it would leave the periphery unmarched).

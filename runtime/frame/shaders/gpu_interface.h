@@ -88,7 +88,9 @@ struct GpuFrame {
     uint reuse;
     uint shade_history;      // 1: the previous frame's shading holds for this one (FG_SHADE_HISTORY)
     uint taa_history;        // 1: temporal anti-aliasing's history holds (the same static scene)
-    uint unused_4;
+    // Frames before this one that saw exactly this view (jitter aside), since it last moved: a still
+    // head's history is then a plain mean of its samples, which converges (0: moving).
+    uint still_frames;
     // Sub-pixel jitter of the eyes' pixel grids (StereoSettings::jitter), in pixels, x right, y
     // down: xy this frame's, zw the previous frame's (whose views are `previous`).
     vec4 jitter;

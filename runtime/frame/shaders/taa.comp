@@ -20,6 +20,9 @@
 // - and blended with the current sample by a weight that grows with the motion (0.1 still, 0.2 at a
 //   pixel per frame and beyond), so a moving picture carries less lag and resampling blur.
 //
+// When the head stops (GpuFrame.still_frames), each pixel averages its samples with equal weights:
+// progressive refinement, the picture of 16 samples per pixel after 16 still frames.
+//
 // The history holds the tone-mapped colour in linear light, so it converges to the mean of the
 // samples as --samples averages them; working after the tone map keeps one bright highlight from
 // dominating a neighbourhood.
@@ -150,7 +153,12 @@ void main()
             float here = t < 0.0 ? 1e30 : length(towards);
             seen = fg_farthest_before(ivec2(floor(at)), size) >= kInFront * here;
         }
-        if (seen) {
+        if (fg_frame.still_frames > 0u) {
+            // A still head: the history is this pixel's own, a plain mean of the samples since the
+            // head stopped (and the picture before, as one sample), so it converges to their mean.
+            vec3 history = imageLoad(fg_history, pixel).rgb;
+            result = mix(history, current, 1.0 / float(fg_frame.still_frames + 1u));
+        } else if (seen) {
             float motion = length(at - (vec2(pixel) + 0.5));
             float sigmas = mix(kStillSigmas, kMovingSigmas, clamp(motion, 0.0, 1.0));
             vec3 history = fg_rgb(fg_clip(fg_ycocg(fg_history_at(at, size)), m1, sigmas * sigma));
