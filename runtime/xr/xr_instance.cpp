@@ -66,6 +66,8 @@ OpenXrInstance::OpenXrInstance() {
     std::vector<const char*> extensions = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
     visibility_mask_ = has(available, XR_KHR_VISIBILITY_MASK_EXTENSION_NAME);
     if (visibility_mask_) extensions.push_back(XR_KHR_VISIBILITY_MASK_EXTENSION_NAME);
+    refresh_rate_ = has(available, XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
+    if (refresh_rate_) extensions.push_back(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
     depth_layer_ = has(available, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     if (depth_layer_) extensions.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     const bool debug_utils = has(available, XR_EXT_DEBUG_UTILS_EXTENSION_NAME);

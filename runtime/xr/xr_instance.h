@@ -1,7 +1,8 @@
 #pragma once
 // The OpenXR instance and the head-mounted system: the extensions fgplay needs
 // (XR_KHR_vulkan_enable2) and the ones it uses where present (XR_KHR_visibility_mask,
-// XR_EXT_debug_utils, through which the core validation layer's messages are counted).
+// XR_KHR_composition_layer_depth, XR_FB_display_refresh_rate, XR_EXT_debug_utils, through which
+// the core validation layer's messages are counted).
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -34,6 +35,7 @@ public:
     const std::string& system_name() const { return system_name_; }
     bool has_visibility_mask() const { return visibility_mask_; }
     bool has_depth_layer() const { return depth_layer_; }   // XR_KHR_composition_layer_depth
+    bool has_refresh_rate() const { return refresh_rate_; }  // XR_FB_display_refresh_rate
     const XrMessageLog& messages() const { return *log_; }
 
     // An extension function; throws when the runtime does not provide it.
@@ -51,6 +53,7 @@ private:
     std::string runtime_name_, system_name_;
     bool visibility_mask_ = false;
     bool depth_layer_ = false;
+    bool refresh_rate_ = false;
     std::unique_ptr<XrMessageLog> log_ = std::make_unique<XrMessageLog>();
 };
 

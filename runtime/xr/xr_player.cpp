@@ -66,6 +66,8 @@ public:
         space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
         space.poseInReferenceSpace.orientation.w = 1.0f;
         check(xrCreateReferenceSpace(session_, &space, &space_), "xrCreateReferenceSpace");
+        if (instance.has_refresh_rate())
+            refresh_rate_ = instance.function<PFN_xrGetDisplayRefreshRateFB>("xrGetDisplayRefreshRateFB");
         if (o.controllers) {
             actions_ = std::make_unique<ControllerActions>(instance.handle(), session_);
             fmt::print("controller bindings accepted for: {}\n", fmt::join(actions_->accepted_profiles(), ", "));
@@ -369,7 +371,7 @@ private:
     void govern(const FrameStats& fs, XrDuration period_ns) {
         auto it = fs.gpu_ms.find("frame");
         if (it == fs.gpu_ms.end()) return;
-        double budget = options_.budget_ms > 0.0 ? options_.budget_ms : static_cast<double>(period_ns) * 1e-6;
+        const double budget = budget_ms(period_ns);
         bool changed = governor_->observe(it->second, budget);
         if (!governor_->message().empty()) {
             fmt::print("governor: {}\n", governor_->message());
@@ -380,6 +382,31 @@ private:
         stereo_.width = frame_.width;
         stereo_.height = frame_.height;
         rebuild_ = true;
+    }
+
+    // The frame budget: --budget-ms, else the display's own refresh (XR_FB_display_refresh_rate),
+    // else the shortest display period the runtime has predicted. Not this frame's predicted period:
+    // a runtime stretches it to whole display periods that cover a slow application (Monado does),
+    // and a budget that followed it would never ask for a cheaper frame. Says which when it changes.
+    double budget_ms(XrDuration period_ns) {
+        shortest_period_ms_ = std::min(shortest_period_ms_, static_cast<double>(period_ns) * 1e-6);
+        double budget = shortest_period_ms_;
+        std::string source = "the shortest display period the runtime predicted";
+        float hz = 0.0f;
+        if (options_.budget_ms > 0.0) {
+            budget = options_.budget_ms;
+            source = "--budget-ms";
+        } else if (refresh_rate_ && refresh_rate_(session_, &hz) == XR_SUCCESS && hz > 0.0f) {
+            budget = 1000.0 / hz;
+            source = fmt::format("the display's refresh rate, {:.4g} Hz", hz);
+        }
+        if (source != budget_source_ || budget != budget_ms_) {
+            fmt::print("governor: budget {:.4g} ms per frame ({})\n", budget, source);
+            std::fflush(stdout);
+            budget_source_ = source;
+            budget_ms_ = budget;
+        }
+        return budget;
     }
 
     void apply(const GovernorLevel& level) {
@@ -467,6 +494,10 @@ private:
     bool rebuild_ = false;
     int wraps_seen_ = 0;
     double base_detail_scale_ = 1.0;   // the render size's pixels per swapchain pixel at level 0
+    PFN_xrGetDisplayRefreshRateFB refresh_rate_ = nullptr;   // where the runtime has XR_FB_display_refresh_rate
+    double shortest_period_ms_ = 1e30;
+    std::string budget_source_;
+    double budget_ms_ = 0.0;
     std::unique_ptr<CollisionWitness> witness_;
     SessionLifecycle lifecycle_;
     VisibilityMask masks_[2];

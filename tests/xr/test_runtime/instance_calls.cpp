@@ -21,20 +21,23 @@ struct ExtensionSpec {
     std::uint32_t version;
 };
 constexpr ExtensionSpec kExtensions[] = {{XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME, 2}, {XR_KHR_VISIBILITY_MASK_EXTENSION_NAME, 2},
-                                         {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION}};
+                                         {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION},
+                                         {XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME, XR_FB_display_refresh_rate_SPEC_VERSION}};
 
 bool switched_on(const char* variable) {
     const char* value = std::getenv(variable);
     return value && *value == '1';
 }
 
-// FG_XR_TEST_NO_DEPTH_LAYER=1, FG_XR_TEST_NO_VISIBILITY_MASK=1: a runtime without that extension.
+// FG_XR_TEST_NO_DEPTH_LAYER=1, FG_XR_TEST_NO_VISIBILITY_MASK=1, FG_XR_TEST_NO_REFRESH_RATE=1: a
+// runtime without that extension.
 std::vector<ExtensionSpec> offered_extensions() {
     std::vector<ExtensionSpec> out;
     for (const auto& e : kExtensions) {
         const std::string name = e.name;
         if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME && switched_on("FG_XR_TEST_NO_DEPTH_LAYER")) continue;
         if (name == XR_KHR_VISIBILITY_MASK_EXTENSION_NAME && switched_on("FG_XR_TEST_NO_VISIBILITY_MASK")) continue;
+        if (name == XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME && switched_on("FG_XR_TEST_NO_REFRESH_RATE")) continue;
         out.push_back(e);
     }
     return out;
@@ -82,7 +85,9 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
         if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) inst->vulkan2 = true;
         if (name == XR_KHR_VISIBILITY_MASK_EXTENSION_NAME) inst->visibility_mask = true;
         if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME) inst->depth_layer = true;
+        if (name == XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME) inst->refresh_rate = true;
     }
+    inst->stretch = switched_on("FG_XR_TEST_STRETCH");
     // "WxH" for both eyes, or "WxH,WxH": a runtime may recommend a different size for each eye.
     if (const char* size = std::getenv("FG_XR_TEST_SIZE")) {
         unsigned w[2] = {0, 0}, h[2] = {0, 0};

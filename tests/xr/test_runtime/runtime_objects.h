@@ -2,6 +2,7 @@
 // The test runtime's objects behind the OpenXR handles, and the state that its report covers.
 // One instance at a time is enough for fgplay.
 #include <cstdint>
+#include <chrono>
 #include <deque>
 #include <map>
 #include <memory>
@@ -84,7 +85,11 @@ struct Space {
 };
 
 struct Instance {
-    bool vulkan2 = false, visibility_mask = false, depth_layer = false;
+    bool vulkan2 = false, visibility_mask = false, depth_layer = false, refresh_rate = false;
+    // FG_XR_TEST_STRETCH=1: as Monado, the predicted display period stretches to whole display
+    // periods that cover the application's own frame interval (wall clock).
+    bool stretch = false;
+    std::chrono::steady_clock::time_point last_wait{};
     bool requirements_queried = false;
     std::deque<XrEventDataBuffer> events;
     std::vector<std::unique_ptr<Session>> sessions;

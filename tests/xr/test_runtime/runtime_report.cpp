@@ -25,6 +25,8 @@ void RuntimeReport::write() const {
     j["session_states"] = session_states;
     j["swapchains"] = swapchains;
     j["visibility_mask_calls"] = visibility_mask_calls;
+    j["refresh_rate_calls"] = refresh_rate_calls;
+    j["longest_period_ms"] = longest_period_ms;
     j["vulkan_instance_created_by_runtime"] = vulkan_instance_created;
     j["vulkan_device_created_by_runtime"] = vulkan_device_created;
     j["device_features_added_by_runtime"] = device_features_added;

@@ -12,6 +12,8 @@ struct RuntimeReport {
     std::vector<std::string> session_states;
     std::vector<std::string> swapchains;  // "R8G8B8A8_UNORM 96x96"
     int visibility_mask_calls = 0;
+    int refresh_rate_calls = 0;              // xrGetDisplayRefreshRateFB
+    double longest_period_ms = 0.0;          // the longest display period predicted
     bool vulkan_instance_created = false, vulkan_device_created = false;
     std::vector<std::string> device_features_added;   // feature structs the runtime put into fgplay's device chain
     bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;

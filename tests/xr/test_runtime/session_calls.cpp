@@ -313,7 +313,15 @@ XRAPI_ATTR XrResult XRAPI_CALL WaitFrame(XrSession handle, const XrFrameWaitInfo
         push_state(*s, XR_SESSION_STATE_FOCUSED);
     }
     // No real display: time advances one period per frame, so every run is the same.
-    const XrDuration period = inst->script.period_ns(inst->report.frames_waited);
+    XrDuration period = inst->script.period_ns(inst->report.frames_waited);
+    const auto now = std::chrono::steady_clock::now();
+    if (inst->stretch && inst->report.frames_waited > 0) {
+        // Whole display periods that cover the time since the last wait (Monado's pacing).
+        const auto since = std::chrono::duration_cast<std::chrono::nanoseconds>(now - inst->last_wait).count();
+        period *= std::max<XrDuration>(1, (since + period - 1) / period);
+    }
+    inst->last_wait = now;
+    inst->report.longest_period_ms = std::max(inst->report.longest_period_ms, static_cast<double>(period) * 1e-6);
     s->waited_display_time = s->next_display_time;
     s->next_display_time += period;
     inst->clock += period;
@@ -467,6 +475,18 @@ XRAPI_ATTR XrResult XRAPI_CALL EndFrame(XrSession handle, const XrFrameEndInfo* 
     return XR_SUCCESS;
 }
 
+// XR_FB_display_refresh_rate: the display's own rate, the scripted period's (never stretched).
+XRAPI_ATTR XrResult XRAPI_CALL GetDisplayRefreshRateFB(XrSession handle, float* rate) {
+    Session* s = session(handle);
+    if (!s) return XR_ERROR_HANDLE_INVALID;
+    Instance* inst = live_instance();
+    if (!inst->refresh_rate) return XR_ERROR_FUNCTION_UNSUPPORTED;
+    if (!rate) return XR_ERROR_VALIDATION_FAILURE;
+    *rate = static_cast<float>(1e9 / static_cast<double>(inst->script.period_ns(std::max(0, inst->report.frames_waited - 1))));
+    ++inst->report.refresh_rate_calls;
+    return XR_SUCCESS;
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL GetVisibilityMaskKHR(XrSession handle, XrViewConfigurationType type, std::uint32_t view,
                                                     XrVisibilityMaskTypeKHR mask_type, XrVisibilityMaskKHR* mask) {
     Session* s = session(handle);
@@ -556,6 +576,7 @@ const std::vector<NamedFunction> kSessionFunctions = {
     FG_FN(LocateViews),
     FG_FN(EndFrame),
     FG_FN(GetVisibilityMaskKHR),
+    FG_FN(GetDisplayRefreshRateFB),
 };
 
 }  // namespace fgxrt
