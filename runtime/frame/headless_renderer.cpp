@@ -17,7 +17,7 @@ std::vector<float> floats(const std::vector<std::byte>& bytes) {
 
 HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame,
                                    const StereoSettings& stereo)
-    : ctx_(ctx), pack_(pack), frame_(frame), stereo_(stereo) {
+    : ctx_(ctx), pack_(pack), frame_(frame), detail_scale_(frame.detail_scale), stereo_(stereo) {
     stereo_.width = frame.width;
     stereo_.height = frame.height;
     // The frame graph's sizes depend only on the fields of view, not on the pose.
@@ -42,10 +42,18 @@ StereoViews HeadlessRenderer::make_views(const HeadPose& head) const {
 
 void HeadlessRenderer::set_world_scale(double world_scale) { stereo_.world_scale = world_scale; }
 
+void HeadlessRenderer::set_detail_scale(double scale) {
+    if (scale == detail_scale_) return;
+    detail_scale_ = scale;
+    executor_->forget_history();
+}
+
 FrameStats HeadlessRenderer::run(const HeadPose& head, double time, std::uint32_t frame_index) {
     if (executor_->graph().taa) stereo_.jitter = taa_jitter(frame_index);
     views_ = make_views(head);
-    GpuFrame gpu = make_gpu_frame(views_, executor_->graph().settings, time, stereo_.world_scale, frame_index);
+    FrameSettings settings = executor_->graph().settings;
+    settings.detail_scale = detail_scale_;
+    GpuFrame gpu = make_gpu_frame(views_, settings, time, stereo_.world_scale, frame_index);
     executor_->set_frame(gpu);
     return executor_->run();
 }

@@ -37,6 +37,9 @@ public:
     FrameStats run(const HeadPose& head, double time, std::uint32_t frame_index = 0);
     // The sub-pixel offset of both eyes' pixel grids from the next frame on (StereoSettings::jitter).
     void set_jitter(glm::dvec2 pixels) { stereo_.jitter = pixels; }
+    // Output pixels per marched pixel from the next frame on (FrameSettings::detail_scale: a picture
+    // shown at another size than it is rendered); a change forgets the frames before.
+    void set_detail_scale(double scale);
     // Scene units per metre from the next frame on (a camera path zooms): the IPD follows it.
     void set_world_scale(double world_scale);
     FrameExecutor& executor() { return *executor_; }
@@ -48,6 +51,7 @@ private:
     StereoViews make_views(const HeadPose& head) const;
 
     FrameSettings frame_;
+    double detail_scale_ = 1.0;
     StereoSettings stereo_;
     StereoViews views_;
     std::unique_ptr<FrameExecutor> executor_;

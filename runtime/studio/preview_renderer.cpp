@@ -2,12 +2,16 @@
 
 #include <chrono>
 
+#include <algorithm>
+
 #include "frame/image_output.h"
+#include "frame/sample_jitter.h"
 
 namespace fg::studio {
 
-FrameSettings preview_frame_settings(std::uint32_t eye_size) {
+FrameSettings preview_frame_settings(std::uint32_t eye_size, bool taa) {
     FrameSettings frame;
+    frame.taa = taa;
     frame.width = frame.height = eye_size;
     frame.stereo = StereoMode::PerEye;
     frame.count_evaluations = true;
@@ -22,7 +26,7 @@ std::unique_ptr<PreviewScene> prepare_scene(const vk::Context& ctx, Pack pack, s
     scene->pack = std::make_unique<Pack>(std::move(pack));
     StereoSettings stereo;
     stereo.world_scale = scene->pack->manifest.scene.world_scale;
-    scene->renderer = std::make_unique<HeadlessRenderer>(ctx, *scene->pack, preview_frame_settings(eye_size), stereo);
+    scene->renderer = std::make_unique<HeadlessRenderer>(ctx, *scene->pack, preview_frame_settings(eye_size, true), stereo);
     if (with_probe) scene->probe = std::make_unique<CollisionProbe>(ctx, *scene->pack);
     scene->revision = revision;
     return scene;
@@ -32,7 +36,15 @@ PreviewFrame render_scene(PreviewScene& scene, const PreviewRequest& request, st
                           RenderedFrame& rendered) {
     auto start = std::chrono::steady_clock::now();
     HeadlessRenderer& renderer = *scene.renderer;
-    for (const auto& [name, value] : request.params) renderer.executor().set_param(name, value);
+    // A parameter set again forgets the frames before, even at the same value: a still view would
+    // never refine.
+    for (const auto& [name, value] : request.params) {
+        auto it = scene.applied.find(name);
+        if (it != scene.applied.end() && it->second == value) continue;
+        if (renderer.executor().set_param(name, value)) scene.applied[name] = value;
+    }
+    // The page's pixels are the output's: the detail of the picture it shows, at any render size.
+    if (request.display_width > 0.0) renderer.set_detail_scale(renderer.views().left.width / request.display_width);
     HeadPose head = renderer.scene_camera();
     if (request.position && request.target && *request.position != *request.target)
         head = look_at(*request.position, *request.target);
@@ -45,6 +57,7 @@ PreviewFrame render_scene(PreviewScene& scene, const PreviewRequest& request, st
     if (auto it = rendered.stats.gpu_ms.find("frame"); it != rendered.stats.gpu_ms.end()) out.gpu_ms = it->second;
     out.evaluations_per_pixel = rendered.stats.evaluations_per_pixel;
     out.revision = scene.revision;
+    if (renderer.graph().taa) out.samples = std::min(renderer.executor().frame().still_frames + 1, kRefinedFrames);
     out.cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

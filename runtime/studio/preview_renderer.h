@@ -27,12 +27,14 @@ struct PreviewScene {
     std::unique_ptr<HeadlessRenderer> renderer;
     std::unique_ptr<CollisionProbe> probe;
     std::uint64_t revision = 0;
+    std::map<std::string, Constant> applied;   // parameter values set so far: only a change is set again
 };
 
 struct PreviewRequest {
     std::optional<glm::dvec3> position, target;     // the scene's camera when absent
     bool side_by_side = false;
     std::map<std::string, Constant> params;         // by name; unknown names are ignored
+    double display_width = 0.0;                     // device pixels the page shows an eye across (0: as rendered)
 };
 
 struct PreviewFrame {
@@ -42,6 +44,7 @@ struct PreviewFrame {
     double cpu_ms = 0.0;             // render and read back, wall clock
     double evaluations_per_pixel = 0.0;
     std::uint64_t revision = 0;
+    std::uint32_t samples = 1;       // samples per pixel the picture holds (a still view refines to 16)
 };
 
 struct ProbeHit {
@@ -87,7 +90,8 @@ private:
     std::uint64_t frames_ = 0;
 };
 
-// The frame settings every studio view renders with (evaluations counted for the page's figure).
-FrameSettings preview_frame_settings(std::uint32_t eye_size);
+// The frame settings every studio view renders with (evaluations counted for the page's figure);
+// the live preview adds temporal anti-aliasing, so a still view refines.
+FrameSettings preview_frame_settings(std::uint32_t eye_size, bool taa = false);
 
 }  // namespace fg::studio

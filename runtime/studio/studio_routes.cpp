@@ -187,12 +187,15 @@ void add_preview_routes(httplib::Server& server, StudioSession& s) {
         }
         request.side_by_side = body->value("stereo", "mono") == "side-by-side";
         request.params = param_values(*body);
+        if (auto width = body->find("display_width"); width != body->end() && width->is_number() && width->get<double>() > 0.0)
+            request.display_width = std::min(width->get<double>(), 16384.0);
         auto frame = s.preview().render(request);
         if (!frame) return refuse(res, 409, "no graph has compiled yet");
         res.set_header("X-Fg-Gpu-Ms", fmt::format("{:.3f}", frame->gpu_ms));
         res.set_header("X-Fg-Cpu-Ms", fmt::format("{:.3f}", frame->cpu_ms));
         res.set_header("X-Fg-Evaluations-Per-Pixel", fmt::format("{:.2f}", frame->evaluations_per_pixel));
         res.set_header("X-Fg-Revision", std::to_string(frame->revision));
+        res.set_header("X-Fg-Samples", std::to_string(frame->samples));
         res.set_header("X-Fg-Compiles", std::to_string(s.compiles()));
         send_png(res, std::move(frame->png));
     });

@@ -17,7 +17,7 @@ import {
   type FinalConnectionState,
   type NodeChange,
 } from "@xyflow/react";
-import { api, type CalibrationStatus, type CompileState, type Diagnostic, type FrameInfo, type GraphDoc, type GraphNodeDoc, type Json, type NodeDef, type ProbeInfo } from "./api";
+import { api, REFINED_SAMPLES, type CalibrationStatus, type CompileState, type Diagnostic, type FrameInfo, type GraphDoc, type GraphNodeDoc, type Json, type NodeDef, type ProbeInfo } from "./api";
 import { addNode, nodesOf, pasteNodes, placeOf, portsOf, removeNodes, setBinding, setNodeField, uniqueId, wiresOf } from "./graph";
 import { autoLayout, editorPositions, type Positions } from "./layout";
 import { History } from "./history";
@@ -93,18 +93,25 @@ function Studio() {
     s.inFlight = true;
     s.again = false;
     const v = view.current;
+    // The device pixels one eye is shown across: the renderer hits by them, whatever its own size.
+    const shown = document.querySelector('[data-testid="preview-frame"]')?.clientWidth ?? 0;
+    const displayWidth = (shown * window.devicePixelRatio) / (v.stereo ? 2 : 1);
+    let refine = false;
     api
-      .frame({ camera: v.camera, params: v.params, stereo: v.stereo ? "side-by-side" : "mono" })
-      .then((f) =>
+      .frame({ camera: v.camera, params: v.params, stereo: v.stereo ? "side-by-side" : "mono", display_width: displayWidth })
+      .then((f) => {
+        // A still view keeps refining: each frame adds a sample per pixel until REFINED_SAMPLES.
+        const now = view.current;
+        refine = f.samples < REFINED_SAMPLES && now.camera === v.camera && now.params === v.params && now.stereo === v.stereo;
         setFrame((old) => {
           if (old) URL.revokeObjectURL(old.url);
           return f;
-        }),
-      )
+        });
+      })
       .catch(() => undefined)
       .finally(() => {
         s.inFlight = false;
-        if (s.again) requestFrame();
+        if (s.again || refine) requestFrame();
       });
   }, []);
   useEffect(requestFrame, [camera, params, stereo, requestFrame]);

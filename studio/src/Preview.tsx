@@ -1,7 +1,7 @@
 // The live preview: frames from the real renderer, orbit or fly with the mouse, mono or side-by-side
 // stereo, the frame's GPU time and evaluations per pixel, and the probe under a clicked pixel.
 import { useRef, useState } from "react";
-import type { FrameInfo, ProbeInfo } from "./api";
+import { REFINED_SAMPLES, type FrameInfo, type ProbeInfo } from "./api";
 import { dolly, fly, look, orbit, type Camera } from "./camera";
 
 interface Props {
@@ -73,6 +73,9 @@ export function Preview({ frame, camera, onCamera, stereo, onStereo, probe, onPr
             <span>GPU {frame.gpuMs >= 0 ? `${frame.gpuMs.toFixed(1)} ms` : "n/a"}</span>
             <span>frame {frame.cpuMs.toFixed(1)} ms</span>
             <span>{frame.evaluationsPerPixel.toFixed(1)} evaluations/pixel</span>
+            <span data-testid="samples">
+              {frame.samples >= REFINED_SAMPLES ? `${frame.samples} samples/pixel` : `refining: ${frame.samples}/${REFINED_SAMPLES} samples`}
+            </span>
             <span data-testid="compiles">{frame.compiles} compiles</span>
           </>
         )}

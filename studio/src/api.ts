@@ -56,7 +56,11 @@ export interface FrameInfo {
   compiles: number;
   width: number;
   height: number;
+  samples: number; // samples per pixel the picture holds: a still view refines to REFINED_SAMPLES
 }
+
+// A still preview refines until each pixel holds this many samples (the runtime's kRefinedFrames).
+export const REFINED_SAMPLES = 16;
 
 export interface ProbeInfo {
   hit: boolean;
@@ -106,6 +110,7 @@ export const api = {
       evaluationsPerPixel: header("X-Fg-Evaluations-Per-Pixel"),
       revision: header("X-Fg-Revision"),
       compiles: header("X-Fg-Compiles"),
+      samples: header("X-Fg-Samples") || 1,
       width: bitmap.width,
       height: bitmap.height,
     };

@@ -216,6 +216,38 @@ test("the studio edits a graph with a live preview", async (t) => {
     await page.screenshot({ path: path.join(shots, "overview.png") });
   });
 
+  await t.test("a still preview refines to 16 samples per pixel, shown smoothly at the page's size", async () => {
+    await page.waitForFunction(() => document.querySelector('[data-testid="samples"]')?.textContent?.includes("16 samples/pixel"), {
+      timeout: 120000,
+    });
+    const refined = await previewPixels();
+    const box = await (await page.$('[data-testid="preview-image"]')).boundingBox();
+    await page.screenshot({ path: path.join(shots, "preview_refined.png"), clip: box });
+    // What the preview showed before: one sample per pixel of the render size, blown up with
+    // nearest-neighbour. A camera a hair away restarts the server's refinement: one sample.
+    const one = await page.evaluate(async () => {
+      const r = await fetch("/api/frame", {
+        method: "POST",
+        headers: { "Content-Type": "application/json" },
+        body: JSON.stringify({ camera: { position: [0.0, 0.6001, 2.6], target: [0, 0, 0] }, stereo: "mono" }),
+      });
+      const samples = Number(r.headers.get("X-Fg-Samples"));
+      const img = document.createElement("img");
+      img.src = URL.createObjectURL(await r.blob());
+      await img.decode();
+      const shown = document.querySelector('[data-testid="preview-image"]').getBoundingClientRect();
+      Object.assign(img.style, { position: "fixed", left: `${shown.left}px`, top: `${shown.top}px`, width: `${shown.width}px`,
+                                 height: `${shown.height}px`, imageRendering: "pixelated", zIndex: 1000 });
+      img.id = "one-sample";
+      document.body.appendChild(img);
+      return { samples, width: img.naturalWidth };
+    });
+    await page.screenshot({ path: path.join(shots, "preview_one_sample.png"), clip: box });
+    await page.evaluate(() => document.getElementById("one-sample").remove());
+    assert.equal(one.samples, 1, "a new view starts from one sample");
+    assert.ok(refined.width === one.width && refined.variance > 10, "the refined frame is a picture of the render size");
+  });
+
   await t.test("the power slider changes the preview without a recompile", async () => {
     const compiles = (await serverState()).compiles;
     const slider = await page.$('[data-testid="param-power"]');
@@ -242,6 +274,7 @@ test("the studio edits a graph with a live preview", async (t) => {
     await setLiteral("round", "radius", "0.08");
     frame = await waitForPreview(frame);
     await idle();
+    frame = await previewPixels();   // refined: a still preview's frames change until 16 samples per pixel
     await page.waitForSelector('[data-testid="preview-round"]', { timeout: 60000 });
     await page.screenshot({ path: path.join(shots, "node_added.png") });
   });
