@@ -36,6 +36,9 @@ expect_failure("no samples" "--samples: Value 0 not in range" ${FGPLAY} render $
 expect_failure("samples of a panorama" "panoramas take --supersample" ${FGPLAY} render ${WORK}/bulb.fgpack
                --path ${SOURCE}/docs/mandelbulb_flight.json --projection equirect --samples 4 --out ${WORK}/x --no-progress)
 
+expect_failure("temporal anti-aliasing in shards" "--taa carries history from frame to frame" ${FGPLAY} render
+               ${WORK}/bulb.fgpack --path ${SOURCE}/docs/mandelbulb_flight.json --taa --shard 0/2 --out ${WORK}/x)
+
 # Jittered samples of a still: the picture differs from one sample's, and the line says how many.
 execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 32x32 --samples 4 --out ${WORK}/samples
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
