@@ -41,4 +41,19 @@ double psnr(const Rgba8Image& a, const Rgba8Image& b, std::span<const std::uint8
     return 10.0 * std::log10(255.0 * 255.0 / (se / static_cast<double>(n)));
 }
 
+double flicker(const Rgba8Image& now, const Rgba8Image& before, const Rgba8Image& truth_now,
+               const Rgba8Image& truth_before, std::span<const std::uint8_t> visible) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    const std::size_t size = std::min({now.pixels.size(), before.pixels.size(), truth_now.pixels.size(), truth_before.pixels.size()});
+    for (std::size_t i = 0; i < size; ++i) {
+        if (i % 4 == 3 || (i / 4 < visible.size() && !visible[i / 4])) continue;
+        const double change = static_cast<double>(now.pixels[i]) - before.pixels[i];
+        const double truth_change = static_cast<double>(truth_now.pixels[i]) - truth_before.pixels[i];
+        sum += std::abs(change - truth_change);
+        ++n;
+    }
+    return n ? sum / static_cast<double>(n) : 0.0;
+}
+
 }  // namespace fg::bench

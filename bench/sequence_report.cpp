@@ -52,7 +52,7 @@ std::string csv_text(std::string s) {
 }  // namespace
 
 void SequenceRow::summarize() {
-    std::vector<double> ms, wrong, over, over_march, quality, evals, iterations;
+    std::vector<double> ms, wrong, over, over_march, quality, evals, iterations, picture, flickers;
     rendered = dark = counted = 0;
     not_finite_worst = 0;
     std::vector<double> after;
@@ -69,6 +69,8 @@ void SequenceRow::summarize() {
             over.push_back(f.overstepped_pct);
             over_march.push_back(f.overstepped_march_pct);
             quality.push_back(f.psnr);
+            picture.push_back(f.picture_psnr);
+            if (f.flicker >= 0.0) flickers.push_back(f.flicker);
             not_finite_worst = std::max(not_finite_worst, f.not_finite);
         }
         if (f.evaluations_per_pixel >= 0.0) {
@@ -92,14 +94,18 @@ void SequenceRow::summarize() {
     overstepped_march_worst = largest(over_march);
     psnr_mean = mean(quality);
     psnr_worst = smallest(quality);
+    picture_psnr_median = median(picture);
+    picture_psnr_worst = smallest(picture);
+    flicker_median = median(flickers);
+    flicker_worst = largest(flickers);
 }
 
 std::string SequenceRow::brief() const {
     return fmt::format(
         "{:8.2f} ms (p99 {:.2f}, worst {:.2f})  {:6.2f} evals/px  {:.3f}% wrong (worst {:.3f})  "
-        "PSNR {:.1f} (worst {:.1f})",
-        median_ms, p99_ms, worst_ms, evaluations_per_pixel, misclassified_mean, misclassified_worst, psnr_mean,
-        psnr_worst);
+        "picture {:.1f} dB (worst {:.1f}), flicker {:.2f}",
+        median_ms, p99_ms, worst_ms, evaluations_per_pixel, misclassified_mean, misclassified_worst, picture_psnr_median,
+        picture_psnr_worst, flicker_median);
 }
 
 void SequenceReport::fill_speedups() {
@@ -139,7 +145,8 @@ void SequenceReport::write(const std::string& folder) const {
     csv << ",misclassified_pct_mean,misclassified_pct_worst,overstepped_pct_mean,overstepped_pct_worst,"
            "overstepped_march_pct_mean,overstepped_march_pct_worst,not_finite_worst,"
            "psnr_db_mean,psnr_db_worst,reuse_skipped_fraction,speedup_median_vs_naive,speedup_p99_vs_naive,"
-           "speedup_median_vs_naive_lanes,speedup_p99_vs_naive_lanes,error\n";
+           "speedup_median_vs_naive_lanes,speedup_p99_vs_naive_lanes,picture_psnr_db_median,picture_psnr_db_worst,"
+           "flicker_median,flicker_worst,error\n";
     for (const auto& r : rows) {
         const FrameSettings& f = r.setting.frame;
         auto lanes = f.knobs.find("persistent_lanes");
@@ -149,25 +156,27 @@ void SequenceReport::write(const std::string& folder) const {
                            std::max(0.0, f.foveation), f.width, r.rendered, r.dark, r.counted, r.median_ms, r.p99_ms,
                            r.worst_ms, r.after_march_share, r.evaluations_per_pixel, r.iterations_per_pixel);
         for (const auto& g : groups) csv << "," << lane_cell(r, g);
-        csv << fmt::format(",{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{}\n",
+        csv << fmt::format(",{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{:.2f},{:.2f},{:.3f},{:.3f},{}\n",
                            r.misclassified_mean, r.misclassified_worst, r.overstepped_mean, r.overstepped_worst,
                            r.overstepped_march_mean, r.overstepped_march_worst, r.not_finite_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
                            ratio_cell(r.speedup_median_naive), ratio_cell(r.speedup_p99_naive),
                            ratio_cell(r.speedup_median_naive_lanes), ratio_cell(r.speedup_p99_naive_lanes),
+                           r.picture_psnr_median, r.picture_psnr_worst, r.flicker_median, r.flicker_worst,
                            r.error.empty() ? "" : csv_text(r.error));
     }
 
     std::ofstream frames_csv(fs::path(folder) / "sequence_frames.csv");
     frames_csv << "scene,trace,setting,frame,dark,frame_ms,evals_per_px,misclassified_pct,overstepped_pct,"
-                  "overstepped_march_pct,psnr_db,sm_clock_mhz\n";
+                  "overstepped_march_pct,psnr_db,picture_psnr_db,flicker,sm_clock_mhz\n";
     for (const auto& r : rows)
         for (const auto& f : r.frames)
             frames_csv << fmt::format(
-                "{},{},{},{},{},{:.3f},{},{},{}\n", r.scene, r.trace, r.setting.name(), f.index, f.dark ? 1 : 0, f.gpu_ms,
+                "{},{},{},{},{},{:.3f},{},{},{},{}\n", r.scene, r.trace, r.setting.name(), f.index, f.dark ? 1 : 0, f.gpu_ms,
                 f.evaluations_per_pixel >= 0.0 ? fmt::format("{:.3f}", f.evaluations_per_pixel) : "",
-                f.compared ? fmt::format("{:.4f},{:.4f},{:.4f},{:.2f}", f.misclassified_pct, f.overstepped_pct,
-                                         f.overstepped_march_pct, f.psnr)
-                           : std::string(",,,"),
+                f.compared ? fmt::format("{:.4f},{:.4f},{:.4f},{:.2f},{:.2f}", f.misclassified_pct, f.overstepped_pct,
+                                         f.overstepped_march_pct, f.psnr, f.picture_psnr)
+                           : std::string(",,,,"),
+                f.flicker >= 0.0 ? fmt::format("{:.3f}", f.flicker) : "",
                 f.sm_clock_mhz >= 0.0 ? fmt::format("{:.0f}", f.sm_clock_mhz) : "");
 
     // Per scene, what the frame governor walks: `fgplay xr --trade-offs trade_offs_<scene>.json`.
@@ -186,7 +195,10 @@ void SequenceReport::write(const std::string& folder) const {
         "rendered. Evaluations per pixel and "
         "SIMD lanes busy come from a separate counting renderer every {} frames (counting costs "
         "atomics, so it is never the timed one). Errors are against the strict reference of {} "
-        "(naive, a tenth of the hit threshold, half steps, 4000 steps), mean and worst frame. Speed-ups (×) are the baseline's time "
+        "(naive, a tenth of the hit threshold, half steps, 4000 steps), mean and worst frame. The picture's "
+        "errors are against its ground truth, 16 jittered samples per pixel of naive tracing at the output "
+        "detail: PSNR, and flicker, the frame-to-frame change the ground truth does not have (mean over pixels "
+        "and channels, 8-bit levels), median and worst frame. Speed-ups (×) are the baseline's time "
         "over the setting's, same scene, trace and pixel set, same run.\n\n",
         kHeadsetHz, device, size, size, frames, count_every,
         compare_every > 1 ? fmt::format("one frame in {} (`--compare-every {}`)", compare_every, compare_every)
@@ -255,23 +267,25 @@ void SequenceReport::write(const std::string& folder) const {
         if (scene != scene_now) md << "\n## " << (scene_now = scene) << "\n";
         md << "\n### " << trace
            << "\n\n| setting | frames | median ms | p99 ms | worst ms | after the march | evals/px | fractal iterations/px | SIMD lanes busy | "
-              "wrong % mean | wrong % worst | overstep % mean | overstep % worst | PSNR mean | PSNR worst | reuse "
+              "wrong % mean | wrong % worst | overstep % mean | overstep % worst | PSNR mean | PSNR worst | picture PSNR "
+              "median | picture PSNR worst | flicker median | flicker worst | reuse "
               "skipped | × naive (median / p99) | × naive + lanes (median / p99) |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+              "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& r : rows) {
             if (r.scene != scene || r.trace != trace) continue;
             bool base = r.setting.baseline != SequenceBaseline::None;
             std::string name = base ? "**" + r.setting.name() + "**" : r.setting.name();
             if (!r.error.empty()) {
-                md << fmt::format("| {} | error: {} |||||||||||||||||\n", name, r.error);
+                md << fmt::format("| {} | error: {} |||||||||||||||||||||\n", name, r.error);
                 continue;
             }
             md << fmt::format(
                 "| {} | {}{} | {:.2f} | {:.2f} | {:.2f} | {:.0f} % | {:.2f} | {:.2f} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
-                "{:.1f} | {:.1f} | {:.2f} | {} / {} | {} / {} |\n",
+                "{:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {} / {} | {} / {} |\n",
                 name, r.rendered, r.dark ? fmt::format(" (+{} dark)", r.dark) : "", r.median_ms, r.p99_ms, r.worst_ms,
                 100.0 * r.after_march_share, r.evaluations_per_pixel, r.iterations_per_pixel, lanes_summary(r), r.misclassified_mean, r.misclassified_worst,
-                r.overstepped_mean, r.overstepped_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
+                r.overstepped_mean, r.overstepped_worst, r.psnr_mean, r.psnr_worst, r.picture_psnr_median,
+                r.picture_psnr_worst, r.flicker_median, r.flicker_worst, r.reuse_skipped_fraction,
                 ratio_cell(r.speedup_median_naive), ratio_cell(r.speedup_p99_naive),
                 ratio_cell(r.speedup_median_naive_lanes), ratio_cell(r.speedup_p99_naive_lanes));
         }

@@ -20,6 +20,9 @@ struct SequenceFrame {
     bool compared = false;   // against the strict reference (every frame, or every --compare-every'th)
     double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
     double overstepped_march_pct = 0.0;   // of the oversteps, at pixels the eye marched (not foveation's fill)
+    // Against the picture's ground truth, 16 jittered samples per pixel of naive tracing at the output
+    // detail: PSNR, and flicker (frame_measures.h) where the frame before was compared too (< 0: not).
+    double picture_psnr = 0.0, flicker = -1.0;
     std::size_t not_finite = 0;
     double evaluations_per_pixel = -1.0;   // from the counting renderer; < 0 on frames it skipped
     double iterations_per_pixel = -1.0;    // fractal loop iterations, the same way
@@ -41,6 +44,7 @@ struct SequenceRow {
     double misclassified_mean = 0.0, misclassified_worst = 0.0, overstepped_mean = 0.0, overstepped_worst = 0.0;
     double overstepped_march_mean = 0.0, overstepped_march_worst = 0.0;
     double psnr_mean = 0.0, psnr_worst = 0.0;
+    double picture_psnr_median = 0.0, picture_psnr_worst = 0.0, flicker_median = 0.0, flicker_worst = 0.0;
     std::size_t not_finite_worst = 0;
     int rendered = 0, dark = 0, counted = 0;
     // Baseline time / this time, same scene, trace and pixel set; 0 where the baseline is missing.

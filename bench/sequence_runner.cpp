@@ -22,6 +22,7 @@
 #include "frame_measures.h"
 #include "gpu_clock.h"
 #include "head_trace.h"
+#include "offline/jittered_samples.h"
 #include "pack/pack_reader.h"
 #include "sequence_report.h"
 #include "sequence_settings.h"
@@ -86,11 +87,24 @@ std::optional<Scene> load_scene(const SceneSource& source, Diagnostics& diag) {
     return scene;
 }
 
-// The strict reference of one frame; empty for a dark frame.
+// The strict reference of one frame (its depths judge the march), and the picture's ground truth:
+// 16 jittered samples per pixel of naive tracing at the output detail. Empty for a dark frame.
 struct ReferenceFrame {
     Rgba8Image left, right;
     std::vector<double> depth_left, depth_right;
+    Rgba8Image truth_left, truth_right;
 };
+
+constexpr std::uint32_t kTruthSamples = 16;
+
+// The naive tracer at the pack's own knobs: what the picture's ground truth averages.
+FrameSettings truth_settings(std::uint32_t size) {
+    FrameSettings f;
+    f.width = f.height = size;
+    f.stereo = StereoMode::Naive;
+    f.foveation = 0.0;
+    return f;
+}
 
 // A snap turn's fade as `fgplay xr` applies it: the last pass scales the image.
 void set_brightness(HeadlessRenderer& renderer, const GpuScene& scene, double brightness) {
@@ -103,6 +117,9 @@ void set_brightness(HeadlessRenderer& renderer, const GpuScene& scene, double br
 struct SettingRenderers {
     std::unique_ptr<HeadlessRenderer> timed, counting;
     std::vector<std::uint8_t> seen_left, seen_right;   // empty: every pixel (no lens mask)
+    // The last frame compared, for flicker: its images and its index in the trace.
+    Rgba8Image last_left, last_right;
+    std::size_t last_index = static_cast<std::size_t>(-1);
 
     SettingRenderers(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame,
                      const StereoSettings& stereo) {
@@ -125,8 +142,9 @@ std::vector<std::uint8_t> seen_and_marched(const std::vector<std::uint8_t>& seen
     return mask;
 }
 
-void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel_half_diagonal,
-             const SettingRenderers& r, SequenceFrame& out) {
+// `before`: the references of frame index - 1, where it was compared too (for flicker).
+void compare(const RenderedFrame& frame, std::size_t index, const ReferenceFrame& ref, const ReferenceFrame* before,
+             double pixel_half_diagonal, SettingRenderers& r, SequenceFrame& out) {
     DepthComparison left = compare_depths(frame.depth_left, ref.depth_left, pixel_half_diagonal, r.seen_left);
     DepthComparison right = compare_depths(frame.depth_right, ref.depth_right, pixel_half_diagonal, r.seen_right);
     const double pixels = static_cast<double>(std::max<std::size_t>(1, left.pixels + right.pixels));
@@ -146,6 +164,13 @@ void compare(const RenderedFrame& frame, const ReferenceFrame& ref, double pixel
     out.overstepped_march_pct = 100.0 * static_cast<double>(marched_oversteps) / pixels;
     out.not_finite = left.not_finite + right.not_finite;
     out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
+    out.picture_psnr = 0.5 * (psnr(frame.left, ref.truth_left, r.seen_left) + psnr(frame.right, ref.truth_right, r.seen_right));
+    if (before && r.last_index + 1 == index)
+        out.flicker = 0.5 * (flicker(frame.left, r.last_left, ref.truth_left, before->truth_left, r.seen_left) +
+                             flicker(frame.right, r.last_right, ref.truth_right, before->truth_right, r.seen_right));
+    r.last_left = frame.left;
+    r.last_right = frame.right;
+    r.last_index = index;
     out.compared = true;
 }
 
@@ -210,12 +235,12 @@ void count_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, con
 // then counted every `count_every` frames. A setting that reuses the frame before renders every frame
 // on the counting renderer too, so that its history is the timed one's.
 void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame* ref,
-                  double pixel_half_diagonal, const GpuScene& scene, const GpuClock* clock, int count_every,
-                  SequenceRow& row) {
+                  const ReferenceFrame* before, double pixel_half_diagonal, const GpuScene& scene, const GpuClock* clock,
+                  int count_every, SequenceRow& row) {
     RenderedFrame frame;
     SequenceFrame f = time_frame(r, trace, i, scene, clock, ref ? &frame : nullptr);
     if (!f.dark) {
-        if (ref) compare(frame, *ref, pixel_half_diagonal, r, f);
+        if (ref) compare(frame, i, *ref, before, pixel_half_diagonal, r, f);
         const bool counts_now = i % static_cast<std::size_t>(count_every) == 0;
         if (counts_now || r.counting->executor().graph().reuse)
             count_frame(r, trace, i, scene, counts_now, f, row, nullptr);
@@ -227,12 +252,13 @@ void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, co
 // which renders every frame in order (so a reusing setting's history is the timed one's), read back and
 // compared where `ref` is given, its counts taken every `count_every` frames.
 void measure_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame* ref,
-                   double pixel_half_diagonal, const GpuScene& scene, int count_every, SequenceRow& row) {
+                   const ReferenceFrame* before, double pixel_half_diagonal, const GpuScene& scene, int count_every,
+                   SequenceRow& row) {
     SequenceFrame& f = row.frames.at(i);
     if (f.dark) return;
     RenderedFrame frame;
     count_frame(r, trace, i, scene, i % static_cast<std::size_t>(count_every) == 0, f, row, ref ? &frame : nullptr);
-    if (ref) compare(frame, *ref, pixel_half_diagonal, r, f);
+    if (ref) compare(frame, i, *ref, before, pixel_half_diagonal, r, f);
 }
 
 double load_average() {
@@ -337,6 +363,7 @@ int run_sequence_bench(const BenchOptions& o) {
         stereo.world_scale = scene_settings.world_scale;
         const GpuScene gpu_scene = make_gpu_scene(scene.pack.manifest.scene);
         HeadlessRenderer reference(ctx, scene.pack, strict_reference_settings(scene.pack.manifest, size, size), stereo);
+        HeadlessRenderer truth(ctx, scene.pack, truth_settings(size), stereo);
         const double half_diagonal = reference.views().pixel_half_diagonal;
         std::vector<std::unique_ptr<SettingRenderers>> renderers(settings.size());
         std::vector<std::string> broken(settings.size());   // why a setting's renderers could not be made
@@ -350,6 +377,7 @@ int run_sequence_bench(const BenchOptions& o) {
         for (const auto& trace : traces) {
             const double ref_started = elapsed_s();
             reference.set_world_scale(trace.world_scale);
+            truth.set_world_scale(trace.world_scale);
             // Only the frames compared (every one unless --compare-every): at a headset's size each
             // reference frame holds tens of megabytes.
             auto compared = [&](std::size_t i) { return i % static_cast<std::size_t>(report.compare_every) == 0; };
@@ -359,9 +387,12 @@ int run_sequence_bench(const BenchOptions& o) {
                 if (tf.brightness <= 0.0 || !compared(i)) continue;
                 set_brightness(reference, gpu_scene, tf.brightness);
                 RenderedFrame frame = reference.render(tf.head, tf.time, static_cast<std::uint32_t>(i));
+                set_brightness(truth, gpu_scene, tf.brightness);
+                RenderedFrame picture = render_samples(truth, tf.head, tf.time, static_cast<std::uint32_t>(i), kTruthSamples);
                 refs[i] = {std::move(frame.left), std::move(frame.right),
                            std::vector<double>(frame.depth_left.begin(), frame.depth_left.end()),
-                           std::vector<double>(frame.depth_right.begin(), frame.depth_right.end())};
+                           std::vector<double>(frame.depth_right.begin(), frame.depth_right.end()),
+                           std::move(picture.left), std::move(picture.right)};
             }
             const ReferenceFrame& first = refs.front();
             const auto last =
@@ -410,12 +441,13 @@ int run_sequence_bench(const BenchOptions& o) {
             }
             for (std::size_t i = 0; i < trace.frames.size(); ++i) {
                 const ReferenceFrame* ref = compared(i) ? &refs[i] : nullptr;
+                const ReferenceFrame* before = i > 0 && compared(i - 1) && !refs[i - 1].truth_left.pixels.empty() ? &refs[i - 1] : nullptr;
                 each_setting(i, [&](std::size_t s) {
                     if (report.back_to_back)
-                        measure_frame(*renderers[s], trace, i, ref, half_diagonal, gpu_scene, count_every, rows[s]);
+                        measure_frame(*renderers[s], trace, i, ref, before, half_diagonal, gpu_scene, count_every, rows[s]);
                     else
-                        render_frame(*renderers[s], trace, i, ref, half_diagonal, gpu_scene, clock.get(), count_every,
-                                     rows[s]);
+                        render_frame(*renderers[s], trace, i, ref, before, half_diagonal, gpu_scene, clock.get(),
+                                     count_every, rows[s]);
                 });
                 ++done;
                 if ((i + 1) % 15 == 0 && i + 1 < trace.frames.size()) {

@@ -60,6 +60,9 @@ std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool qui
         FrameSettings history = method(StereoMode::PerEye, false, f);
         history.knobs["shade_history"] = 0.5;
         out.push_back({"per-eye + shading history", pixels, history});
+        FrameSettings taa = method(StereoMode::PerEye, false, f);
+        taa.taa = true;
+        out.push_back({"per-eye + TAA", pixels, taa});
     };
     add_methods(kAllPixels, all);
     if (!quick) {

@@ -21,6 +21,7 @@ nlohmann::json sequence_trade_offs_json(const SequenceReport& report, const std:
                              {"pass_ms", {{"frame", r.median_ms}}},
                              {"frame_ms_p99", r.p99_ms},
                              {"wrong_pct", r.misclassified_mean},
+                             {"picture_psnr_db", r.picture_psnr_median},
                              {"overstepped_pct", r.overstepped_mean},
                              {"error", error}});
     }

@@ -27,6 +27,7 @@ struct GovernorLevel {
     std::string name;
     std::optional<StereoMode> stereo;
     std::optional<std::uint32_t> cone_levels;
+    std::optional<bool> taa;             // temporal anti-aliasing, where the ladder says
     std::string describe() const;
 };
 

@@ -12,14 +12,16 @@ namespace fg {
 TradeOffError::TradeOffError(std::string w, const std::string& what) : std::runtime_error(w + ": " + what), where(std::move(w)) {}
 
 std::vector<TradeOff> pareto_front(std::vector<TradeOff> settings) {
-    std::stable_sort(settings.begin(), settings.end(), [](const TradeOff& a, const TradeOff& b) {
-        return a.time_ms != b.time_ms ? a.time_ms < b.time_ms : a.wrong_pct < b.wrong_pct;
+    const bool by_picture =
+        std::all_of(settings.begin(), settings.end(), [](const TradeOff& t) { return t.picture_mse >= 0.0; });
+    std::stable_sort(settings.begin(), settings.end(), [&](const TradeOff& a, const TradeOff& b) {
+        return a.time_ms != b.time_ms ? a.time_ms < b.time_ms : a.error(by_picture) < b.error(by_picture);
     });
     // Walking from the cheapest, a setting earns its place only by being more accurate than every
     // cheaper one: paying more time for no less error is never a step up.
     std::vector<TradeOff> front;
     for (auto& s : settings)
-        if (front.empty() || s.wrong_pct < front.back().wrong_pct) front.push_back(std::move(s));
+        if (front.empty() || s.error(by_picture) < front.back().error(by_picture)) front.push_back(std::move(s));
     return front;
 }
 
@@ -29,6 +31,7 @@ nlohmann::json trade_off_settings_json(const FrameSettings& f, std::uint32_t ben
             {"lens_mask", f.lens_mask},
             {"foveation", std::max(f.foveation, 0.0)},
             {"render_scale", bench_size ? static_cast<double>(f.width) / bench_size : 1.0},
+            {"taa", f.taa},
             {"knobs", f.knobs}};
 }
 
@@ -60,6 +63,11 @@ void read_trade_off_settings(const nlohmann::json& j, const std::string& pointer
     out.frame.lens_mask = lens.get<bool>();
     out.frame.foveation = number(member(j, pointer, "foveation"), pointer + "/foveation", 0.0, 4.0);
     out.render_scale = number(member(j, pointer, "render_scale"), pointer + "/render_scale", 0.05, 1.0);
+    // Temporal anti-aliasing: absent in files written before the benchmark measured it.
+    if (auto taa = j.find("taa"); taa != j.end()) {
+        if (!taa->is_boolean()) throw TradeOffError(pointer + "/taa", "expected true or false");
+        out.frame.taa = taa->get<bool>();
+    }
     const auto& knobs = member(j, pointer, "knobs");
     if (!knobs.is_object()) throw TradeOffError(pointer + "/knobs", "expected an object of knob values");
     out.frame.knobs.clear();
@@ -102,13 +110,17 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
         double ms = number(member(pass_ms, at + "/pass_ms", "frame"), at + "/pass_ms/frame", 0.0, 1e7);
         if (ms <= 0.0) throw TradeOffError(at + "/pass_ms/frame", "no GPU time (the benchmark's device had no timestamps?)");
         double wrong = number(member(row, at, "wrong_pct"), at + "/wrong_pct", 0.0, 100.0);
+        // The picture's PSNR (fgplay bench --sequence) as a mean squared error on a [0, 1] scale.
+        double mse = -1.0;
+        if (row.contains("picture_psnr_db"))
+            mse = std::pow(10.0, -number(row["picture_psnr_db"], at + "/picture_psnr_db", 0.0, 200.0) / 10.0);
         if (fresh) {
             order.push_back(name);
             s.t = t;
             s.first = at;
         } else if (s.views > 0 && (t.frame.stereo != s.t.frame.stereo || t.frame.knobs != s.t.frame.knobs ||
                                    t.frame.foveation != s.t.frame.foveation || t.render_scale != s.t.render_scale ||
-                                   t.frame.cone_levels != s.t.frame.cone_levels)) {
+                                   t.frame.cone_levels != s.t.frame.cone_levels || t.frame.taa != s.t.frame.taa)) {
             throw TradeOffError(at + "/settings", fmt::format("setting \"{}\" differs from its row {}", t.setting, s.first));
         } else if (s.views == 0) {
             s.t = t;
@@ -116,6 +128,8 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
         }
         s.t.time_ms += ms;
         s.t.wrong_pct += wrong;
+        // One view without the picture's error leaves the setting without it.
+        s.t.picture_mse = mse < 0.0 || (s.views > 0 && s.t.picture_mse < 0.0) ? -1.0 : (s.views ? s.t.picture_mse : 0.0) + mse;
         ++s.views;
     }
     std::vector<TradeOff> measured;
@@ -123,6 +137,7 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
         Sum& s = sums[name];
         if (s.failed || s.views != static_cast<int>(views.size())) continue;
         s.t.wrong_pct /= s.views;
+        if (s.t.picture_mse >= 0.0) s.t.picture_mse /= s.views;
         measured.push_back(s.t);
     }
     if (measured.empty()) throw TradeOffError("/rows", "no setting was measured without error in every view");
@@ -131,8 +146,11 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
 
 nlohmann::json trade_off_front_json(const nlohmann::json& results) {
     auto front = nlohmann::json::array();
-    for (const auto& t : trade_offs_from_bench_json(results))
-        front.push_back({{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", t.wrong_pct}});
+    for (const auto& t : trade_offs_from_bench_json(results)) {
+        nlohmann::json entry{{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", t.wrong_pct}};
+        if (t.picture_mse > 0.0) entry["picture_psnr_db"] = -10.0 * std::log10(t.picture_mse);
+        front.push_back(std::move(entry));
+    }
     return front;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The accuracy-versus-time trade-off that `fgplay bench` measures, as settings a player can switch
 // between. A setting's cost is its GPU time summed over the benchmark's views, its error the
-// misclassified pixels averaged over them; the Pareto front keeps the settings that no other one
-// beats on both. The benchmark writes the front into results.json; the frame governor walks it.
+// misclassified pixels averaged over them, or the picture's error against its ground truth where
+// the benchmark measured it (fgplay bench --sequence); the Pareto front keeps the settings that no
+// other one beats on both. The benchmark writes the front into results.json; the frame governor walks it.
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,12 @@ struct TradeOff {
     double render_scale = 1.0; // of the per-eye size the benchmark measured at
     double time_ms = 0.0;      // GPU time per stereo frame, summed over the views
     double wrong_pct = 0.0;    // misclassified pixels, mean over the views
+    // The picture's error against its ground truth (rows' picture_psnr_db): mean squared error on a
+    // [0, 1] scale over the views; < 0 where a row did not measure it.
+    double picture_mse = -1.0;
+    // The error the front compares: the picture's where every setting measured it (then a cleaner
+    // picture, anti-aliasing included, counts), else the misclassified pixels.
+    double error(bool by_picture) const { return by_picture ? picture_mse : wrong_pct; }
 };
 
 // A bad trade-off file: `where` is the JSON pointer of the entry at fault ("/rows/3/settings/stereo").

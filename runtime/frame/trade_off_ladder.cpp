@@ -1,5 +1,7 @@
 #include "frame/trade_off_ladder.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace fg {
@@ -13,6 +15,7 @@ std::vector<GovernorLevel> trade_off_ladder(const PackManifest& manifest, const 
         level.foveation = it->frame.foveation;
         level.stereo = it->frame.stereo;
         level.cone_levels = it->frame.cone_levels;
+        level.taa = it->frame.taa;
         for (const auto& [k, v] : it->frame.knobs) {
             const auto* spec = manifest.find_spec(k);
             if (!spec)
@@ -35,6 +38,7 @@ std::string describe_trade_off_ladder(const std::vector<TradeOff>& front) {
         const TradeOff& t = front[front.size() - 1 - i];
         s += fmt::format("{}  level {}: \"{}\", {:.1f} ms, {:.3f} % misclassified", i ? "\n" : "", i, t.setting, t.time_ms,
                          t.wrong_pct);
+        if (t.picture_mse > 0.0) s += fmt::format(", picture {:.1f} dB", -10.0 * std::log10(t.picture_mse));
     }
     return s;
 }

@@ -16,9 +16,10 @@ namespace {
 
 constexpr std::uint32_t kSize = 128;
 
-// A row of `frames` rendered frames, each taking `ms` and misclassifying `wrong` percent.
+// A row of `frames` rendered frames, each taking `ms` and misclassifying `wrong` percent, its
+// picture `picture_db` from the ground truth (by default the worse, the more pixels are wrong).
 SequenceRow row(const std::string& scene, const std::string& trace, const SequenceSetting& setting, double ms,
-                double wrong, int frames = 3) {
+                double wrong, int frames = 3, double picture_db = -1.0) {
     SequenceRow r;
     r.scene = scene;
     r.trace = trace;
@@ -29,6 +30,7 @@ SequenceRow row(const std::string& scene, const std::string& trace, const Sequen
         f.gpu_ms = ms;
         f.compared = true;
         f.misclassified_pct = wrong;
+        f.picture_psnr = picture_db >= 0.0 ? picture_db : 50.0 - 20.0 * wrong;
         r.frames.push_back(f);
     }
     r.summarize();
@@ -85,6 +87,28 @@ TEST(SequenceTradeOffs, the_governor_reads_each_settings_cost_summed_over_the_tr
     EXPECT_DOUBLE_EQ(front[2].render_scale, 1.0);
     EXPECT_EQ(j["trade_offs"].size(), 3u);
     EXPECT_EQ(j["rows"].size(), 14u);   // the bulb's only
+}
+
+TEST(SequenceTradeOffs, anti_aliasing_earns_its_rung_by_the_pictures_error) {
+    // TAA marches as per-eye does (the same pixels wrong) but its picture is closer to the ground
+    // truth: with the picture's error measured, it is on the front between per-eye and naive.
+    const auto settings = make_sequence_settings(kSize, true);
+    SequenceReport report;
+    report.size = kSize;
+    for (const char* trace : {"look_around", "walk"}) {
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "naive"), 40.0, 0.20, 3, 30.0));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye"), 30.0, 0.25, 3, 29.0));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye + TAA"), 33.0, 0.25, 3, 33.0));
+    }
+    const nlohmann::json j = sequence_trade_offs_json(report, "mandelbulb");
+    test::ScratchDir dir{"fg_sequence_trade_offs_taa"};
+    std::ofstream(dir / "trade_offs_mandelbulb.json") << j.dump(1);
+    const std::vector<TradeOff> front = read_trade_offs((dir / "trade_offs_mandelbulb.json").string());
+    ASSERT_EQ(front.size(), 2u) << j["trade_offs"].dump();
+    EXPECT_EQ(front[0].setting, "per-eye");
+    EXPECT_EQ(front[1].setting, "per-eye + TAA");
+    EXPECT_TRUE(front[1].frame.taa);
+    EXPECT_NEAR(j["trade_offs"][1]["picture_psnr_db"].get<double>(), 33.0, 1e-9);
 }
 
 TEST(SequenceTradeOffs, a_scene_with_no_setting_measured_on_every_trace_says_why_it_has_no_front) {

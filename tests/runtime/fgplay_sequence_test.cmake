@@ -62,7 +62,7 @@ function(ten_thousandths value out)
 endfunction()
 
 set(settings "naive" "naive + persistent lanes" "per-eye" "per-eye + persistent lanes" "per-eye + reuse"
-    "per-eye + shading history")
+    "per-eye + shading history" "per-eye + TAA")
 list(LENGTH lines n)
 list(LENGTH settings setting_count)
 math(EXPR expected "5 * ${setting_count}")

@@ -26,7 +26,8 @@ function(measured_frames mode out)
 endfunction()
 
 # `measured` against `expected` (an every-frame run) line by line, the header included; where only
-# one frame in `every` was compared, the others' error cells (the last four) blank.
+# one frame in `every` was compared, the others' error cells (the last six) blank, and flicker (the
+# last, which needs the frame before compared too) blank on every frame.
 function(expect_frames label measured expected every)
   list(LENGTH measured n_measured)
   list(LENGTH expected n)
@@ -42,7 +43,9 @@ function(expect_frames label measured expected every)
     if(frame MATCHES "^[0-9]+$")
       math(EXPR left_over "${frame} % ${every}")
       if(NOT left_over EQUAL 0)
-        string(REGEX REPLACE "^([^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,)[^,]*,[^,]*,[^,]*,[^,]*$" "\\1,,," b "${b}")
+        string(REGEX REPLACE "^([^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,)[^,]*,[^,]*,[^,]*,[^,]*,[^,]*,[^,]*$" "\\1,,,,," b "${b}")
+      elseif(every GREATER 1)
+        string(REGEX REPLACE ",[^,]*$" "," b "${b}")
       endif()
     endif()
     if(NOT a STREQUAL b)

@@ -53,10 +53,21 @@ vec3 fg_rgb(vec3 y)
     return vec3(y.x + y.y - y.z, y.x + y.z, y.x - y.y - y.z);
 }
 
-// A pixel of this frame as displayed (sRGB-encoded), clamped to the image.
+// What of the picture a fade (a snap turn's, the head in the surface) leaves: the shade pass scales
+// the displayed values by it. The history holds the unfaded picture, so a fade is no change of the
+// scene and leaves no dark trail; this pass fades what it shows.
+float fg_kept()
+{
+    return 1.0 - fg_scene.fade;
+}
+
+// Below this much of the picture left, 8-bit values hold too little of it to unfade.
+const float kFadedOut = 0.05;
+
+// A pixel of this frame as displayed (sRGB-encoded) without the fade, clamped to the image.
 vec3 fg_current(ivec2 pixel, ivec2 size)
 {
-    return imageLoad(fg_jittered, clamp(pixel, ivec2(0), size - 1)).rgb;
+    return min(imageLoad(fg_jittered, clamp(pixel, ivec2(0), size - 1)).rgb / max(fg_kept(), kFadedOut), vec3(1.0));
 }
 
 // The history at a continuous position (pixel units, texel centres at i + 0.5): a Catmull-Rom
@@ -128,7 +139,7 @@ void main()
     float t = imageLoad(fg_depth, pixel).x;
     imageStore(fg_resolved_depth, pixel, vec4(t));
     vec3 result = current;
-    if (fg_frame.taa_history != 0u && !fg_outside_lens(pc.view, pixel)) {
+    if (fg_frame.taa_history != 0u && !fg_outside_lens(pc.view, pixel) && fg_kept() >= kFadedOut) {
         // The neighbourhood's colour statistics, for the clip box.
         vec3 m1 = vec3(0.0), m2 = vec3(0.0);
         for (int j = -1; j <= 1; ++j)
@@ -168,5 +179,5 @@ void main()
     }
     vec3 rgb = max(result, vec3(0.0));
     imageStore(fg_resolved, pixel, vec4(rgb, 1.0));
-    imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(rgb), 1.0));
+    imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(rgb) * fg_kept(), 1.0));
 }
