@@ -12,7 +12,7 @@ frame) and `--samples 16` (the reference), then compares the left eyes frame by 
 
 Writes OUT/taa_frames.csv (every frame), OUT/taa_quality.md (medians from frame 16 on, worst
 frames) and OUT/taa_quality.png (PSNR per frame). Traces start at the graph's camera: look_around
-(the gaze circling 15 degrees at 60 deg/s), fast_turn (yaw at 150 deg/s), walk (sideways at
+(the gaze circling 15 degrees at 60 deg/s), fast_turn (yaw +-30 degrees at up to 150 deg/s), walk (sideways at
 0.3 scene units/s, looking ahead), still (the first pose held).
 """
 import csv
@@ -56,7 +56,8 @@ def trace(name, camera):
             d[1] -= pitch * math.hypot(d[0], d[2])
             keys.append({"time": t, "position": eye, "target": [e + x for e, x in zip(eye, d)]})
         elif name == "fast_turn":
-            d = rotate_y(ahead, math.radians(150.0) * t)
+            # +-30 degrees, passing the start at 150 deg/s: the fractal stays in view.
+            d = rotate_y(ahead, math.radians(30.0) * math.sin(150.0 / 30.0 * t))
             keys.append({"time": t, "position": eye, "target": [e + x for e, x in zip(eye, d)]})
         elif name == "walk":
             side = rotate_y([ahead[0], 0.0, ahead[2]], math.pi / 2)

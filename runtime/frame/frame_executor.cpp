@@ -504,6 +504,7 @@ FrameStats FrameExecutor::run() {
     previous_views_[1] = frame_data_.views[FG_VIEW_RIGHT];
     previous_jitter_ = {frame_data_.jitter.x, frame_data_.jitter.y};
     still_frames_ = frame_data_.still_frames;
+    history_frames_ = history_valid_ ? history_frames_ + 1 : 1;
     history_valid_ = true;
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();

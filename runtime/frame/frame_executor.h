@@ -71,6 +71,9 @@ public:
     const FrameGraph& graph() const { return graph_; }
     const PackManifest& manifest() const { return manifest_; }
     std::uint64_t frames_run() const { return frames_run_; }
+    // Frames the history holds since it was last forgotten (0: none): temporal anti-aliasing takes
+    // its jitter phase from it, so the first frame after a reset is the same for the same view.
+    std::uint64_t history_frames() const { return history_valid_ ? history_frames_ : 0; }
 
 private:
     struct Program {
@@ -108,6 +111,7 @@ private:
     glm::vec2 previous_jitter_{0.0f};   // and their jitter
     std::uint32_t still_frames_ = 0;    // frames in a row that saw the last frame's view (GpuFrame)
     bool history_valid_ = false;
+    std::uint64_t history_frames_ = 0;
     // The tile lists of the graph's tile buffers, remade only when what places them changes (at a
     // headset's resolution a list has tens of thousands of tiles) and written before the next frame.
     // A list holds the tiles outside the lens until every image holds their pixels (frames_to_fill_

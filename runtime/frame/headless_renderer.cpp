@@ -49,7 +49,7 @@ void HeadlessRenderer::set_detail_scale(double scale) {
 }
 
 FrameStats HeadlessRenderer::run(const HeadPose& head, double time, std::uint32_t frame_index) {
-    if (executor_->graph().taa) stereo_.jitter = taa_jitter(frame_index);
+    if (executor_->graph().taa) stereo_.jitter = taa_jitter(executor_->history_frames());
     views_ = make_views(head);
     FrameSettings settings = executor_->graph().settings;
     settings.detail_scale = detail_scale_;

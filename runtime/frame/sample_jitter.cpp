@@ -16,9 +16,9 @@ double radical_inverse(std::uint32_t i, std::uint32_t base) {
 
 glm::dvec2 halton_offset(std::uint32_t k) { return {radical_inverse(k, 2) - 0.5, radical_inverse(k, 3) - 0.5}; }
 
-glm::dvec2 taa_jitter(std::uint64_t frame_index) {
+glm::dvec2 taa_jitter(std::uint64_t history_frames) {
     static const std::vector<glm::dvec2> pattern = sample_pattern(16);
-    return pattern[frame_index % pattern.size()];
+    return pattern[history_frames % pattern.size()];
 }
 
 std::vector<glm::dvec2> sample_pattern(std::uint32_t n) {

@@ -18,9 +18,10 @@ std::vector<glm::dvec2> sample_pattern(std::uint32_t n);
 // Frames a still view takes to average each of taa_jitter's 16 offsets once.
 inline constexpr std::uint32_t kRefinedFrames = 16;
 
-// Temporal anti-aliasing's offset for a frame: the 16 samples of sample_pattern(16) (a 4x4 grid),
-// one per frame, repeating.
-glm::dvec2 taa_jitter(std::uint64_t frame_index);
+// Temporal anti-aliasing's offset for the frame after `history_frames` frames of history
+// (FrameExecutor::history_frames): the 16 samples of sample_pattern(16) (a 4x4 grid), one per
+// frame, repeating.
+glm::dvec2 taa_jitter(std::uint64_t history_frames);
 
 // Halton (2, 3) point k (from 1), centred on the pixel.
 glm::dvec2 halton_offset(std::uint32_t k);

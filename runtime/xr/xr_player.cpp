@@ -296,8 +296,8 @@ private:
         // Temporal anti-aliasing jitters the rays of every frame; a wrap moves the head by whole
         // periods, where the previous frame's view no longer shows the same points.
         const bool taa = executor_ && executor_->graph().taa;
-        stereo_.jitter = taa ? taa_jitter(stats_.frames) : glm::dvec2(0.0);
         if (taa && step_->wraps() != wraps_seen_) executor_->forget_history();
+        stereo_.jitter = taa ? taa_jitter(executor_->history_frames()) : glm::dvec2(0.0);
         wraps_seen_ = step_->wraps();
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
         if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {

@@ -114,7 +114,8 @@ int main(int argc, char** argv) {
                 if (std::min(u, 1.0 - u) + std::min(s, 1.0 - s) < 0.3 + 2.0 / w) continue;
                 const double tx = tl + (tr - tl) * u, ty = tu + (td - tu) * s;
                 const glm::dvec3 rd = origin.orientation * (q * glm::normalize(glm::dvec3(tx, ty, -1.0)));
-                const double t_twin = fg::reference_trace(*twin, scene, ro, rd, cone * coarser, rs);
+                // fgplay hits by the swapchain's pixel at any render size (one look): so does the twin.
+                const double t_twin = fg::reference_trace(*twin, scene, ro, rd, cone, rs);
                 const std::size_t i = static_cast<std::size_t>(y) * w + x;
                 const double d = depth[i];
                 const bool sky = depth[i] == static_cast<float>(hi);
@@ -128,7 +129,9 @@ int main(int argc, char** argv) {
                     const double t = z * scene.world_scale * std::sqrt(1.0 + tx * tx + ty * ty);
                     const double in_cones = (t - t_twin) / (cone * t_twin);
                     v.error.push_back(std::abs(in_cones));
-                    v.behind += in_cones > 1.0;
+                    // A swapchain pixel shows the depth of the nearest rendered ray: up to a coarser
+                    // pixel's depth step beyond its own.
+                    v.behind += in_cones > coarser;
                 }
                 if (sky) {
                     const auto& bg = scene.background;
