@@ -232,8 +232,9 @@ void count_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, con
 }
 
 // Interleaved (a CPU device's default): frame `i` timed, read back and compared where `ref` is given,
-// then counted every `count_every` frames. A setting that reuses the frame before renders every frame
-// on the counting renderer too, so that its history is the timed one's.
+// then counted every `count_every` frames. A setting that reuses the frame before (cross-frame reuse,
+// temporal anti-aliasing, whose jitter follows its history) renders every frame on the counting
+// renderer too, so that its history is the timed one's.
 void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, const ReferenceFrame* ref,
                   const ReferenceFrame* before, double pixel_half_diagonal, const GpuScene& scene, const GpuClock* clock,
                   int count_every, SequenceRow& row) {
@@ -242,7 +243,8 @@ void render_frame(SettingRenderers& r, const HeadTrace& trace, std::size_t i, co
     if (!f.dark) {
         if (ref) compare(frame, i, *ref, before, pixel_half_diagonal, r, f);
         const bool counts_now = i % static_cast<std::size_t>(count_every) == 0;
-        if (counts_now || r.counting->executor().graph().reuse)
+        const FrameGraph& counted = r.counting->executor().graph();
+        if (counts_now || counted.reuse || counted.taa)
             count_frame(r, trace, i, scene, counts_now, f, row, nullptr);
     }
     row.frames.push_back(f);
