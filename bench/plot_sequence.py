@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Plots for `fgplay bench --sequence`: per trace, GPU time of every frame for each setting (one
-panel per scene); and the median and p99 speed-up of every setting over naive sphere tracing on all
-pixels, per trace (one panel per scene). Reads sequence.csv and sequence_frames.csv, writes PNGs
-beside them."""
+panel per scene); the median and p99 speed-up of every setting over naive sphere tracing on all
+pixels, per trace (one panel per scene); and what each setting's time buys, its median GPU time
+against its picture's median PSNR from the ground truth, per trace (the axes of the governor's
+front). Reads sequence.csv and sequence_frames.csv, writes PNGs beside them."""
 import csv
 import math
 import pathlib
@@ -83,4 +84,27 @@ axes[0][0].legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
 fig.tight_layout()
 fig.savefig(folder / "sequence_speedups.png", dpi=100)
 written.append("sequence_speedups.png")
+plt.close(fig)
+
+# Time against the picture: each setting a marker per trace, up and to the left is better.
+if all("picture_psnr_db_median" in r for r in rows):
+    fig, axes = plt.subplots(1, len(scenes), figsize=(6 * len(scenes), 4.6), squeeze=False)
+    markers = "osD^vP*Xh"
+    for ax, scene in zip(axes[0], scenes):
+        for setting in settings:
+            for k, trace in enumerate(traces):
+                r = next((r for r in rows if r["scene"] == scene and r["trace"] == trace and r["setting"] == setting), None)
+                if not r or float(r["frame_ms_median"]) <= 0:
+                    continue
+                ax.scatter(float(r["frame_ms_median"]), float(r["picture_psnr_db_median"]), s=28,
+                           marker=markers[k % len(markers)], facecolors="none" if masked[setting] else colour[method_of[setting]],
+                           edgecolors=colour[method_of[setting]], label=setting if k == 0 else None)
+        ax.set_xlabel("median GPU time per stereo frame (ms)")
+        ax.set_ylabel("picture PSNR against 16 samples per pixel (dB)")
+        ax.set_title(f"{scene}: " + ", ".join(f"{markers[k % len(markers)]} {t}" for k, t in enumerate(traces)), fontsize=8)
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=6, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(folder / "sequence_time_vs_picture.png", dpi=100)
+    written.append("sequence_time_vs_picture.png")
 print("plots: " + ", ".join(str(folder / n) for n in written))
