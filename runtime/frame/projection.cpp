@@ -59,6 +59,7 @@ StereoViews make_panorama_views(const HeadPose& head, const StereoSettings& s) {
     double dlon = 2.0 * std::numbers::pi / s.width, dlat = std::numbers::pi / s.height;
     out.pixel_tan = dlon;
     out.pixel_half_diagonal = 0.5 * (dlon + dlat);
+    out.jitter = s.jitter;   // the shaders move each pixel's point by it (fg_panorama_uv)
     return out;
 }
 

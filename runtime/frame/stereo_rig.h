@@ -46,7 +46,8 @@ struct StereoSettings {
     // Sub-pixel jitter of both eyes' pixel grids, in pixels (x right, y down): each frame of an
     // accumulated or temporally filtered picture samples other points inside its pixels. The eyes
     // share one phase, so stereo reuse still finds the same points in both; the centre eye of stereo
-    // reprojection, which only proves space empty, is never jittered.
+    // reprojection, which only proves space empty, is never jittered. Panoramas take it too
+    // (projection.h), every view alike.
     glm::dvec2 jitter{0.0};
 };
 

@@ -74,8 +74,6 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
     if (settings_.supersample < 1 || settings_.supersample > 8) throw std::runtime_error("supersampling is 1 to 8");
     if (settings_.samples < 1 || settings_.samples > kMaxSamples)
         throw std::runtime_error(fmt::format("--samples is 1 to {}", kMaxSamples));
-    if (settings_.samples > 1 && settings_.projection != Projection::Perspective)
-        throw std::runtime_error("--samples jitters a perspective frustum; panoramas take --supersample");
     if (settings_.taa && settings_.projection != Projection::Perspective)
         throw std::runtime_error("--taa is for perspective frames, as a headset sees them");
     if (settings_.taa && settings_.samples > 1) throw std::runtime_error("--taa and --samples both jitter the rays: choose one");

@@ -26,7 +26,7 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_option("--supersample", r.supersample, "with --path: samples per pixel along each axis (1-8)")->capture_default_str();
     render->add_option("--samples", r.samples,
                        "jittered samples per pixel, averaged in linear light: the --supersample picture of as many "
-                       "samples in the memory of one frame (perspective)")
+                       "samples in the memory of one frame")
         ->capture_default_str()
         ->check(CLI::Range(1u, kMaxSamples));
     render->add_option("--detail", r.detail,

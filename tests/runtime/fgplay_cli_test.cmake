@@ -33,8 +33,6 @@ expect_failure("an output format without a path" "go with --path" ${FGPLAY} rend
                --out ${WORK}/x)
 expect_failure("no samples" "--samples: Value 0 not in range" ${FGPLAY} render ${WORK}/bulb.fgpack --samples 0
                --out ${WORK}/x)
-expect_failure("samples of a panorama" "panoramas take --supersample" ${FGPLAY} render ${WORK}/bulb.fgpack
-               --path ${SOURCE}/docs/mandelbulb_flight.json --projection equirect --samples 4 --out ${WORK}/x --no-progress)
 
 expect_failure("temporal anti-aliasing in shards" "--taa carries history from frame to frame" ${FGPLAY} render
                ${WORK}/bulb.fgpack --path ${SOURCE}/docs/mandelbulb_flight.json --taa --shard 0/2 --out ${WORK}/x)

@@ -87,6 +87,23 @@ TEST_P(PathShards, a_path_rendered_as_one_range_and_as_two_shards_writes_identic
               file_bytes(frame_image_path((dir_ / "whole").string(), 1)));
 }
 
+// Jittered samples of a panorama move each pixel's point as --supersample's grid does: 4 samples
+// give the picture of 2x2 supersampling (naive tracing, so the march does not depend on the grid).
+TEST_F(PathRender, four_jittered_samples_of_an_ods_panorama_give_the_picture_of_2x2_supersampling) {
+    settings_.stereo = StereoMode::Naive;
+    Pack pack = test::compile_pack(test::room_graph());
+    auto picture = [&](std::uint32_t supersample, std::uint32_t samples) {
+        PathRenderSettings s = settings_;
+        s.supersample = supersample;
+        s.samples = samples;
+        return PathRenderer(test::shared_context(), pack, *path_, s).render(1);
+    };
+    const Rgba8Image one = picture(1, 1), four = picture(1, 4), grid = picture(2, 1);
+    const double p4 = test::psnr(four, grid), p1 = test::psnr(one, grid);
+    EXPECT_GE(p4, 45.0) << "4 samples " << p4 << " dB, 1 sample " << p1 << " dB";
+    EXPECT_GT(p4, p1 + 5.0) << "4 samples " << p4 << " dB, 1 sample " << p1 << " dB";
+}
+
 INSTANTIATE_TEST_SUITE_P(Projections, PathShards,
                          ::testing::Values(Projection::Ods, Projection::Equirect, Projection::Perspective),
                          [](const auto& info) { return std::string(projection_name(info.param)); });

@@ -41,12 +41,20 @@ vec2 fg_panorama_angles(vec2 uv)
     return vec2((uv.x - 0.5) * 6.28318531, (0.5 - uv.y) * 3.14159265);
 }
 
+// A panorama's point uv moved by the frame's sub-pixel jitter (GpuFrame.jitter). A perspective
+// frame carries its jitter in the frustum (stereo_rig.h: jittered()), where every pass that
+// projects points back into the image finds it.
+vec2 fg_panorama_uv(int view, vec2 uv)
+{
+    return uv + fg_frame.jitter.xy / vec2(view == FG_VIEW_CENTRE ? fg_frame.centre_size : fg_frame.eye_size);
+}
+
 // Ray direction through a point of a view's image, uv in [0, 1]^2 with y down.
 vec3 fg_ray_dir(int view, vec2 uv)
 {
     GpuView v = fg_frame.views[view];
     if (fg_projection() != FG_PROJECTION_PERSPECTIVE) {
-        vec2 a = fg_panorama_angles(uv);
+        vec2 a = fg_panorama_angles(fg_panorama_uv(view, uv));
         return cos(a.y) * (sin(a.x) * v.right.xyz + cos(a.x) * v.forward.xyz) + sin(a.y) * v.up.xyz;
     }
     float tx = mix(v.tan_fov.x, v.tan_fov.y, uv.x);
@@ -67,7 +75,7 @@ vec3 fg_ray_origin(int view, vec2 uv)
 {
     GpuView v = fg_frame.views[view];
     if (fg_projection() == FG_PROJECTION_ODS && view != FG_VIEW_CENTRE) {
-        vec2 a = fg_panorama_angles(uv);
+        vec2 a = fg_panorama_angles(fg_panorama_uv(view, uv));
         float side = (view == FG_VIEW_LEFT ? -0.5 : 0.5) * fg_ods_separation(a.y);
         return v.origin.xyz + side * fg_frame.ipd * (cos(a.x) * v.right.xyz - sin(a.x) * v.forward.xyz);
     }
