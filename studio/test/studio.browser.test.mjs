@@ -120,6 +120,15 @@ async function idle() {
   await new Promise((r) => setTimeout(r, 800));
 }
 
+// The preview once a still view has refined to 16 samples per pixel: its frames change until then.
+async function refined() {
+  await page.waitForFunction(() => document.querySelector('[data-testid="samples"]')?.textContent?.includes("16 samples/pixel"), {
+    timeout: 120000,
+  });
+  await idle();
+  return previewPixels();
+}
+
 // Where an element settles: a node grows when its preview image or diagnostics arrive, which moves
 // its handles, so a drag starts only once both ends have held still for a moment.
 async function settledBox(selector) {
@@ -274,7 +283,7 @@ test("the studio edits a graph with a live preview", async (t) => {
     await setLiteral("round", "radius", "0.08");
     frame = await waitForPreview(frame);
     await idle();
-    frame = await previewPixels();   // refined: a still preview's frames change until 16 samples per pixel
+    frame = await refined();
     await page.waitForSelector('[data-testid="preview-round"]', { timeout: 60000 });
     await page.screenshot({ path: path.join(shots, "node_added.png") });
   });
