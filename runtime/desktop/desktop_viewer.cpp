@@ -198,7 +198,7 @@ int view(const ViewOptions& o) {
 
             stereo.world_scale = viewer.world_scale;
             const bool taa = playing.executor->graph().taa;
-            stereo.jitter = taa ? taa_jitter(playing.executor->history_frames()) : glm::dvec2(0.0);
+            stereo.jitter = playing.executor->taa_jitter();
             StereoViews views = make_stereo_views(head, fov_of(scene), fov_of(scene), stereo);
             // The frame graph's settings: the viewer's with what the pack decides filled in (a double
             // pack's relative origins, the scene's foveation where the viewer says "as the scene says").

@@ -8,6 +8,7 @@
 
 #include "common/spec_constants.h"
 #include "persistent_groups.h"
+#include "sample_jitter.h"
 #include "vk/commands.h"
 #include "vk/timestamp_queries.h"
 
@@ -291,6 +292,8 @@ void FrameExecutor::make_descriptor_sets() {
         sets_.push_back(sets);
     }
 }
+
+glm::dvec2 FrameExecutor::taa_jitter() const { return graph_.taa ? fg::taa_jitter(history_frames()) : glm::dvec2(0.0); }
 
 void FrameExecutor::set_frame(const GpuFrame& frame) {
     // The pipelines were specialized for the graph's projection (kSpecProjection).

@@ -74,6 +74,9 @@ public:
     // Frames the history holds since it was last forgotten (0: none): temporal anti-aliasing takes
     // its jitter phase from it, so the first frame after a reset is the same for the same view.
     std::uint64_t history_frames() const { return history_valid_ ? history_frames_ : 0; }
+    // The sub-pixel offset of the eyes' pixel grids for the next frame (StereoSettings::jitter):
+    // temporal anti-aliasing's, from history_frames(); none without it.
+    glm::dvec2 taa_jitter() const;
 
 private:
     struct Program {

@@ -3,7 +3,6 @@
 #include <cstring>
 
 #include "aov_images.h"
-#include "sample_jitter.h"
 
 namespace fg {
 
@@ -49,7 +48,8 @@ void HeadlessRenderer::set_detail_scale(double scale) {
 }
 
 FrameStats HeadlessRenderer::run(const HeadPose& head, double time, std::uint32_t frame_index) {
-    if (executor_->graph().taa) stereo_.jitter = taa_jitter(executor_->history_frames());
+    // Without temporal anti-aliasing the jitter stays as set_jitter left it (jittered samples).
+    if (executor_->graph().taa) stereo_.jitter = executor_->taa_jitter();
     views_ = make_views(head);
     FrameSettings settings = executor_->graph().settings;
     settings.detail_scale = detail_scale_;

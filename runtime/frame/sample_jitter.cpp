@@ -12,9 +12,10 @@ double radical_inverse(std::uint32_t i, std::uint32_t base) {
     return result;
 }
 
-}  // namespace
-
+// Halton (2, 3) point k (from 1), centred on the pixel.
 glm::dvec2 halton_offset(std::uint32_t k) { return {radical_inverse(k, 2) - 0.5, radical_inverse(k, 3) - 0.5}; }
+
+}  // namespace
 
 glm::dvec2 taa_jitter(std::uint64_t history_frames) {
     static const std::vector<glm::dvec2> pattern = sample_pattern(16);

@@ -23,7 +23,4 @@ inline constexpr std::uint32_t kRefinedFrames = 16;
 // frame, repeating.
 glm::dvec2 taa_jitter(std::uint64_t history_frames);
 
-// Halton (2, 3) point k (from 1), centred on the pixel.
-glm::dvec2 halton_offset(std::uint32_t k);
-
 }  // namespace fg

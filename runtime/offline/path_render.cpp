@@ -57,11 +57,12 @@ std::string settings_fingerprint(const PathRenderSettings& s) {
     // count_evaluations is left out: it changes the work counted, not the pixels.
     std::string format = output_format_name(s.format);
     if (s.format == OutputFormat::Exr) format += std::string("-") + exr_compression_name(s.compression);
-    std::string samples = s.samples > 1 ? fmt::format(" samples{}", s.samples) : "";
-    if (s.detail != 1.0) samples += fmt::format(" detail{}", s.detail);
-    if (s.taa) samples += " taa";
+    // Written only where they differ from the default, so older records still verify.
+    std::string sampling = s.samples > 1 ? fmt::format(" samples{}", s.samples) : "";
+    if (s.detail != 1.0) sampling += fmt::format(" detail{}", s.detail);
+    if (s.taa) sampling += " taa";
     return fmt::format("{} {} {}x{} ss{}{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
-                       stereo_mode_name(s.stereo), s.width, s.height, s.supersample, samples, s.cone_levels, s.ipd_m,
+                       stereo_mode_name(s.stereo), s.width, s.height, s.supersample, sampling, s.cone_levels, s.ipd_m,
                        knobs, format);
 }
 

@@ -12,7 +12,6 @@
 
 #include "frame/frame_executor.h"
 #include "frame/image_output.h"
-#include "frame/sample_jitter.h"
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
 #include "locomotion/viewer_step.h"
@@ -295,9 +294,8 @@ private:
         auto fov = [](const XrFovf& f) { return Fov::from_angles(f.angleLeft, f.angleRight, f.angleDown, f.angleUp); };
         // Temporal anti-aliasing jitters the rays of every frame; a wrap moves the head by whole
         // periods, where the previous frame's view no longer shows the same points.
-        const bool taa = executor_ && executor_->graph().taa;
-        if (taa && step_->wraps() != wraps_seen_) executor_->forget_history();
-        stereo_.jitter = taa ? taa_jitter(executor_->history_frames()) : glm::dvec2(0.0);
+        if (executor_ && executor_->graph().taa && step_->wraps() != wraps_seen_) executor_->forget_history();
+        stereo_.jitter = executor_ ? executor_->taa_jitter() : glm::dvec2(0.0);
         wraps_seen_ = step_->wraps();
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
         if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {

@@ -16,6 +16,7 @@
 
 #include "bench_views.h"
 #include "offline/jittered_samples.h"
+#include "offline/linear_light.h"
 #include "offline/supersample.h"
 #include "runtime_test_support.h"
 
@@ -29,11 +30,6 @@ std::uint32_t size(std::uint32_t otherwise) {
     return s ? static_cast<std::uint32_t>(std::atoi(s)) : otherwise;
 }
 
-double linear(std::uint8_t c) {
-    double v = c / 255.0;
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
 // Rings around the image centre, in half image heights: the fovea (foveation 0.4), the blend band
 // (0.15 wide), the ring just beyond it and the periphery.
 constexpr std::array<double, 5> kRingEdges{0.0, 0.4, 0.55, 0.8, 10.0};
@@ -44,7 +40,8 @@ std::array<double, 5> ring_means(const Rgba8Image& image) {
     for (std::uint32_t y = 0; y < image.height; ++y)
         for (std::uint32_t x = 0; x < image.width; ++x) {
             const std::uint8_t* p = &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
-            double v = (linear(p[0]) + linear(p[1]) + linear(p[2])) / 3.0;
+            const auto& linear = srgb8_linear_table();
+            double v = (linear[p[0]] + linear[p[1]] + linear[p[2]]) / 3.0;
             double r = std::hypot(x + 0.5 - 0.5 * image.width, y + 0.5 - 0.5 * image.height) / (0.5 * image.height);
             for (std::size_t k = 0; k + 1 < kRingEdges.size(); ++k)
                 if (r >= kRingEdges[k] && r < kRingEdges[k + 1]) sum[k] += v, count[k] += 1.0;
