@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <tuple>
@@ -64,10 +65,12 @@ void SequenceRow::summarize() {
         ++rendered;
         ms.push_back(f.gpu_ms);
         if (f.gpu_ms > 0.0) after.push_back(f.after_march_ms / f.gpu_ms);
-        if (f.compared) {
+        if (f.depths_compared) {
             wrong.push_back(f.misclassified_pct);
             over.push_back(f.overstepped_pct);
             over_march.push_back(f.overstepped_march_pct);
+        }
+        if (f.compared) {
             quality.push_back(f.psnr);
             picture.push_back(f.picture_psnr);
             if (f.flicker >= 0.0) flickers.push_back(f.flicker);
@@ -86,12 +89,13 @@ void SequenceRow::summarize() {
     evaluations_per_pixel = mean(evals);
     iterations_per_pixel = mean(iterations);
     reuse_skipped_fraction = reuse_skipped_frames > 0 ? reuse_skipped_sum / reuse_skipped_frames : 0.0;
-    misclassified_mean = mean(wrong);
-    misclassified_worst = largest(wrong);
-    overstepped_mean = mean(over);
-    overstepped_worst = largest(over);
-    overstepped_march_mean = mean(over_march);
-    overstepped_march_worst = largest(over_march);
+    const double none = wrong.empty() && !quality.empty() ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+    misclassified_mean = wrong.empty() ? none : mean(wrong);
+    misclassified_worst = wrong.empty() ? none : largest(wrong);
+    overstepped_mean = wrong.empty() ? none : mean(over);
+    overstepped_worst = wrong.empty() ? none : largest(over);
+    overstepped_march_mean = wrong.empty() ? none : mean(over_march);
+    overstepped_march_worst = wrong.empty() ? none : largest(over_march);
     psnr_mean = mean(quality);
     psnr_worst = smallest(quality);
     picture_psnr_median = median(picture);
@@ -173,8 +177,10 @@ void SequenceReport::write(const std::string& folder) const {
             frames_csv << fmt::format(
                 "{},{},{},{},{},{:.3f},{},{},{},{}\n", r.scene, r.trace, r.setting.name(), f.index, f.dark ? 1 : 0, f.gpu_ms,
                 f.evaluations_per_pixel >= 0.0 ? fmt::format("{:.3f}", f.evaluations_per_pixel) : "",
-                f.compared ? fmt::format("{:.4f},{:.4f},{:.4f},{:.2f},{:.2f}", f.misclassified_pct, f.overstepped_pct,
-                                         f.overstepped_march_pct, f.psnr, f.picture_psnr)
+                f.compared ? (f.depths_compared ? fmt::format("{:.4f},{:.4f},{:.4f}", f.misclassified_pct, f.overstepped_pct,
+                                                              f.overstepped_march_pct)
+                                                : std::string(",,")) +
+                                 fmt::format(",{:.2f},{:.2f}", f.psnr, f.picture_psnr)
                            : std::string(",,,,"),
                 f.flicker >= 0.0 ? fmt::format("{:.3f}", f.flicker) : "",
                 f.sm_clock_mhz >= 0.0 ? fmt::format("{:.0f}", f.sm_clock_mhz) : "");
@@ -251,15 +257,18 @@ void SequenceReport::write(const std::string& folder) const {
             over(naive, masked, &SequenceRow::median_ms), over(naive, masked, &SequenceRow::p99_ms));
     }
     md << "\n## The frame governor's ladder\n\nThe Pareto front of each scene's settings over its traces (median "
-          "GPU time per frame summed over the traces, misclassified pixels averaged), most accurate first: what "
+          "GPU time per frame summed over the traces against the picture's error), most accurate first: what "
           "`fgplay xr --trade-offs trade_offs_<scene>.json` walks.\n";
     for (const auto& [scene, j] : fronts) {
         md << fmt::format("\n- {}:", scene);
         if (j["trade_offs"].empty()) md << " none (" << j.value("front_error", std::string()) << ")";
-        for (auto it = j["trade_offs"].rbegin(); it != j["trade_offs"].rend(); ++it)
-            md << fmt::format(" {}{} ({:.1f} ms, {:.3f} %)", it == j["trade_offs"].rbegin() ? "" : "→ ",
-                              (*it)["setting"].get<std::string>(), (*it)["time_ms"].get<double>(),
-                              (*it)["wrong_pct"].get<double>());
+        for (auto it = j["trade_offs"].rbegin(); it != j["trade_offs"].rend(); ++it) {
+            const auto& e = *it;
+            std::string measures = fmt::format("{:.1f} ms", e["time_ms"].get<double>());
+            if (e.contains("picture_psnr_db")) measures += fmt::format(", picture {:.1f} dB", e["picture_psnr_db"].get<double>());
+            if (e["wrong_pct"].is_number()) measures += fmt::format(", {:.3f} % misclassified", e["wrong_pct"].get<double>());
+            md << fmt::format(" {}{} ({})", it == j["trade_offs"].rbegin() ? "" : "→ ", e["setting"].get<std::string>(), measures);
+        }
     }
     md << "\n";
     std::string scene_now;

@@ -18,6 +18,8 @@ struct SequenceFrame {
     double gpu_ms = 0.0;   // FrameStats.gpu_ms "frame" of the timed renderer
     double after_march_ms = 0.0;   // of it, the passes after the march: shade, post, fovea
     bool compared = false;   // against the strict reference (every frame, or every --compare-every'th)
+    // ... its depths too (not where temporal upsampling marched fewer pixels than the reference)
+    bool depths_compared = false;
     double misclassified_pct = 0.0, overstepped_pct = 0.0, psnr = 0.0;   // against the strict reference
     double overstepped_march_pct = 0.0;   // of the oversteps, at pixels the eye marched (not foveation's fill)
     // Against the picture's ground truth, 16 jittered samples per pixel of naive tracing at the output
@@ -41,6 +43,7 @@ struct SequenceRow {
     // Over the frames rendered (not dark): filled by summarize().
     double median_ms = 0.0, p99_ms = 0.0, worst_ms = 0.0, evaluations_per_pixel = 0.0, iterations_per_pixel = 0.0;
     double after_march_share = 0.0;   // median over frames of after_march_ms / gpu_ms
+    // The depths' measures: NaN where no frame's depths were compared (depths_compared).
     double misclassified_mean = 0.0, misclassified_worst = 0.0, overstepped_mean = 0.0, overstepped_worst = 0.0;
     double overstepped_march_mean = 0.0, overstepped_march_worst = 0.0;
     double psnr_mean = 0.0, psnr_worst = 0.0;

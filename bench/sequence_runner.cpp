@@ -117,6 +117,8 @@ void set_brightness(HeadlessRenderer& renderer, const GpuScene& scene, double br
 struct SettingRenderers {
     std::unique_ptr<HeadlessRenderer> timed, counting;
     std::vector<std::uint8_t> seen_left, seen_right;   // empty: every pixel (no lens mask)
+    // ... of the output image where it is larger than the marched one (temporal upsampling).
+    std::vector<std::uint8_t> shown_left, shown_right;
     // The last frame compared, for flicker: its images and its index in the trace.
     Rgba8Image last_left, last_right;
     std::size_t last_index = static_cast<std::size_t>(-1);
@@ -131,6 +133,9 @@ struct SettingRenderers {
             const StereoViews& v = timed->views();
             seen_left = visible_pixels(lens_ellipse(v.left), v.left.width, v.left.height);
             seen_right = visible_pixels(lens_ellipse(v.right), v.right.width, v.right.height);
+            const FrameGraph& g = timed->graph();
+            shown_left = visible_pixels(lens_ellipse(v.left), g.output_width, g.output_height);
+            shown_right = visible_pixels(lens_ellipse(v.right), g.output_width, g.output_height);
         }
     }
 };
@@ -142,9 +147,29 @@ std::vector<std::uint8_t> seen_and_marched(const std::vector<std::uint8_t>& seen
     return mask;
 }
 
-// `before`: the references of frame index - 1, where it was compared too (for flicker).
+// The pictures against the strict reference's and the ground truth's; `before`: the references of
+// frame index - 1, where it was compared too (for flicker).
+void compare_pictures(const RenderedFrame& frame, std::size_t index, const ReferenceFrame& ref,
+                      const ReferenceFrame* before, SettingRenderers& r, SequenceFrame& out) {
+    const auto& seen_left = r.shown_left.empty() ? r.seen_left : r.shown_left;
+    const auto& seen_right = r.shown_right.empty() ? r.seen_right : r.shown_right;
+    out.psnr = 0.5 * (psnr(frame.left, ref.left, seen_left) + psnr(frame.right, ref.right, seen_right));
+    out.picture_psnr = 0.5 * (psnr(frame.left, ref.truth_left, seen_left) + psnr(frame.right, ref.truth_right, seen_right));
+    if (before && r.last_index + 1 == index)
+        out.flicker = 0.5 * (flicker(frame.left, r.last_left, ref.truth_left, before->truth_left, seen_left) +
+                             flicker(frame.right, r.last_right, ref.truth_right, before->truth_right, seen_right));
+    r.last_left = frame.left;
+    r.last_right = frame.right;
+    r.last_index = index;
+    out.compared = true;
+}
+
+// The frame's depths against the strict reference's, then its pictures (compare_pictures).
 void compare(const RenderedFrame& frame, std::size_t index, const ReferenceFrame& ref, const ReferenceFrame* before,
              double pixel_half_diagonal, SettingRenderers& r, SequenceFrame& out) {
+    compare_pictures(frame, index, ref, before, r, out);
+    // Temporal upsampling marches fewer pixels than the reference: its depths are not compared.
+    if (frame.depth_left.size() != ref.depth_left.size()) return;
     DepthComparison left = compare_depths(frame.depth_left, ref.depth_left, pixel_half_diagonal, r.seen_left);
     DepthComparison right = compare_depths(frame.depth_right, ref.depth_right, pixel_half_diagonal, r.seen_right);
     const double pixels = static_cast<double>(std::max<std::size_t>(1, left.pixels + right.pixels));
@@ -163,15 +188,7 @@ void compare(const RenderedFrame& frame, std::size_t index, const ReferenceFrame
     }
     out.overstepped_march_pct = 100.0 * static_cast<double>(marched_oversteps) / pixels;
     out.not_finite = left.not_finite + right.not_finite;
-    out.psnr = 0.5 * (psnr(frame.left, ref.left, r.seen_left) + psnr(frame.right, ref.right, r.seen_right));
-    out.picture_psnr = 0.5 * (psnr(frame.left, ref.truth_left, r.seen_left) + psnr(frame.right, ref.truth_right, r.seen_right));
-    if (before && r.last_index + 1 == index)
-        out.flicker = 0.5 * (flicker(frame.left, r.last_left, ref.truth_left, before->truth_left, r.seen_left) +
-                             flicker(frame.right, r.last_right, ref.truth_right, before->truth_right, r.seen_right));
-    r.last_left = frame.left;
-    r.last_right = frame.right;
-    r.last_index = index;
-    out.compared = true;
+    out.depths_compared = true;
 }
 
 // Before a trace: the trace's world scale, and one untimed frame on each renderer so pipelines and

@@ -63,6 +63,11 @@ std::vector<SequenceSetting> make_sequence_settings(std::uint32_t size, bool qui
         FrameSettings taa = method(StereoMode::PerEye, false, f);
         taa.taa = true;
         out.push_back({"per-eye + TAA", pixels, taa});
+        for (double upscale : {1.5, 2.0}) {
+            FrameSettings taau = taa;
+            set_taa_upscale(taau, upscale);
+            out.push_back({fmt::format("per-eye + TAAU {:g}", upscale), pixels, taau});
+        }
     };
     add_methods(kAllPixels, all);
     if (!quick) {

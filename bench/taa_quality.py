@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Temporal anti-aliasing against one sample per pixel, on head traces at 90 Hz, judged against 16
+"""Temporal anti-aliasing and upsampling against one sample per pixel, on head traces at 90 Hz, judged against 16
 jittered samples per pixel of every frame (the picture each frame would converge to). Renders with
 fgplay as a user does: `fgplay render --path P` (1 spp), `--taa` (history carried from frame to
-frame) and `--samples 16` (the reference), then compares the left eyes frame by frame:
+frame), `--taa --taa-upscale 1.5` and `2` (temporal upsampling: 44 % and 25 % of the rays) and
+`--samples 16` (the reference), then compares the left eyes frame by frame:
 
 - PSNR and SSIM (scikit-image) against the reference;
 - flicker: the mean over pixels of |(I_t - I_t-1) - (R_t - R_t-1)| in 8-bit levels, the change
@@ -80,16 +81,21 @@ def psnr(a, b):
     return 99.0 if mse == 0 else 10 * math.log10(255.0 ** 2 / mse)
 
 
-def taa_pass_share(pack):
+# What each method adds to `fgplay render --path`.
+METHODS = {"1 spp": [], "TAA": ["--taa"], "TAAU 1.5": ["--taa", "--taa-upscale", "1.5"],
+           "TAAU 2": ["--taa", "--taa-upscale", "2"]}
+
+
+def frame_times(pack, extra):
     """The taa pass's and the frame's GPU time, medians of frames 4-7 of a still view (after warm-up)."""
-    out = subprocess.run([FGPLAY, "render", pack, "--taa", "--frames", "8", "--size", f"{SIZE}x{SIZE}",
+    out = subprocess.run([FGPLAY, "render", pack, *extra, "--frames", "8", "--size", f"{SIZE}x{SIZE}",
                           "--out", os.path.join(OUT, "taa_timing")], check=True, capture_output=True, text=True).stdout
     taa, frame = [], []
     for line in out.splitlines():
         found = re.match(r"frame (\d+):.*GPU (.*)$", line)
         if found and int(found.group(1)) >= 4:
             ms = {k: float(v) for k, v in re.findall(r"(\w+) ([0-9.]+) ms", found.group(2))}
-            taa.append(ms["taa"])
+            taa.append(ms.get("taa", 0.0))
             frame.append(ms["frame"])
     return float(np.median(taa)), float(np.median(frame))
 
@@ -99,14 +105,17 @@ for graph in GRAPHS:
     scene = os.path.splitext(os.path.basename(graph))[0]
     pack = os.path.join(OUT, scene + ".fgpack")
     subprocess.run([FGC, "compile", graph, "-o", pack], check=True, capture_output=True)
-    taa_ms, frame_ms = taa_pass_share(pack)
-    summary.append(f"{scene}: the taa pass {taa_ms:.2f} of {frame_ms:.2f} ms per frame ({100 * taa_ms / frame_ms:.1f} %)")
+    times = {method: frame_times(pack, extra) for method, extra in METHODS.items()}
+    summary.append(f"{scene}: frame " + ", ".join(f"{m} {t[1]:.2f} ms" for m, t in times.items()) +
+                   "; the taa pass " + ", ".join(f"{100 * t[0] / t[1]:.1f} %" for m, t in times.items() if t[0] > 0) +
+                   " of its frame")
     camera = json.load(open(graph))["scene"]["camera"]
     for name in ("look_around", "fast_turn", "walk", "still"):
         path = os.path.join(OUT, f"{scene}_{name}.json")
         json.dump(trace(name, camera), open(path, "w"))
         base = os.path.join(OUT, f"{scene}_{name}")
-        frames = {"1 spp": render(pack, path, base + "_1spp"), "TAA": render(pack, path, base + "_taa", "--taa")}
+        frames = {method: render(pack, path, base + "_" + re.sub(r"\W+", "_", method.lower()), *extra)
+                  for method, extra in METHODS.items()}
         reference = render(pack, path, base + "_ref", "--samples", "16")
         for method, images in frames.items():
             stats = []
@@ -121,7 +130,7 @@ for graph in GRAPHS:
             med = lambda k: float(np.median([x[k] for x in settled]))
             summary.append(f"| {scene} | {name} | {method} | {med(0):.2f} | {min(x[0] for x in settled):.2f} | "
                            f"{med(1):.4f} | {med(2):.2f} | {max(x[2] for x in settled):.2f} |")
-        print(summary[-2], "\n", summary[-1], flush=True)
+        print("\n".join(summary[-len(METHODS):]), flush=True)
 
 with open(os.path.join(OUT, "taa_frames.csv"), "w", newline="") as f:
     w = csv.writer(f)
@@ -141,9 +150,9 @@ fig, axes = plt.subplots(len(scenes), len(traces), figsize=(4 * len(traces), 2.8
 for r, scene in enumerate(scenes):
     for c, name in enumerate(traces):
         ax = axes[r][c]
-        for method, style in (("1 spp", "-"), ("TAA", "-")):
+        for method in METHODS:
             if (scene, name, method) in curves:
-                ax.plot(curves[(scene, name, method)], style, label=method)
+                ax.plot(curves[(scene, name, method)], label=method)
         ax.axvspan(0, SETTLED, color="0.9")
         ax.set_title(f"{scene}: {name}", fontsize=9)
         ax.set_xlabel("frame (90 Hz)", fontsize=8)

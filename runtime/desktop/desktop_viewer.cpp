@@ -206,7 +206,7 @@ int view(const ViewOptions& o) {
                                                        static_cast<std::uint32_t>(frames)));
             playing.executor->set_scene(viewer.scene);
             // A still view that has refined to 16 samples per pixel is shown as it is: no frame runs.
-            const bool converged = taa && playing.executor->frame().still_frames >= kRefinedFrames;
+            const bool converged = taa && playing.executor->frame().still_frames >= playing.executor->refined_frames();
             if (!converged) stats = playing.executor->run();
             if (converged && !was_converged) {
                 fmt::print("fgplay view: still, refined to {} samples per pixel; idle until the view moves\n", kRefinedFrames);
@@ -219,8 +219,7 @@ int view(const ViewOptions& o) {
                 if (gpu != stats.gpu_ms.end() && governor->observe(gpu->second, o.budget_ms)) {
                     // A new level takes effect from the next frame: new sizes and pipelines.
                     frame = settings_at_level(full_accuracy, governor->current(), o.width, o.height);
-                    stereo.width = frame.width;
-                    stereo.height = frame.height;
+                    set_marched_size(stereo, frame);
                     ctx.wait_idle();
                     playing.executor = build_executor(*playing.pack);
                 }

@@ -293,7 +293,11 @@ void FrameExecutor::make_descriptor_sets() {
     }
 }
 
-glm::dvec2 FrameExecutor::taa_jitter() const { return graph_.taa ? fg::taa_jitter(history_frames()) : glm::dvec2(0.0); }
+glm::dvec2 FrameExecutor::taa_jitter() const {
+    return graph_.taa ? fg::taa_jitter(history_frames(), graph_.settings.taa_upscale()) : glm::dvec2(0.0);
+}
+
+std::uint32_t FrameExecutor::refined_frames() const { return taa_phases(graph_.settings.taa_upscale()); }
 
 void FrameExecutor::set_frame(const GpuFrame& frame) {
     // The pipelines were specialized for the graph's projection (kSpecProjection).
@@ -523,8 +527,8 @@ FrameStats FrameExecutor::run() {
         if (slot[2] > 0) stats.lanes[group] = {slot[1], slot[2]};
         if (slot[3] > 0) stats.reuse_skipped[group] = slot[4] / 1000.0 / slot[3];
     }
-    stats.evaluations_per_pixel = static_cast<double>(total) / (2.0 * graph_.width * graph_.height);
-    stats.iterations_per_pixel = static_cast<double>(iterations) / (2.0 * graph_.width * graph_.height);
+    stats.evaluations_per_pixel = static_cast<double>(total) / (2.0 * graph_.output_width * graph_.output_height);
+    stats.iterations_per_pixel = static_cast<double>(iterations) / (2.0 * graph_.output_width * graph_.output_height);
     return stats;
 }
 

@@ -77,6 +77,9 @@ public:
     // The sub-pixel offset of the eyes' pixel grids for the next frame (StereoSettings::jitter):
     // temporal anti-aliasing's, from history_frames(); none without it.
     glm::dvec2 taa_jitter() const;
+    // Still frames after which temporal anti-aliasing has averaged every jitter offset once (each
+    // output pixel holds 16 samples: sample_jitter.h taa_phases).
+    std::uint32_t refined_frames() const;
 
 private:
     struct Program {

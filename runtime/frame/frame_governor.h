@@ -28,6 +28,7 @@ struct GovernorLevel {
     std::optional<StereoMode> stereo;
     std::optional<std::uint32_t> cone_levels;
     std::optional<bool> taa;             // temporal anti-aliasing, where the ladder says
+    double taa_upscale = 1.0;            // with it, temporal upsampling from 1/this of the render size
     std::string describe() const;
 };
 

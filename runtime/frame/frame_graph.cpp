@@ -248,6 +248,9 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.taa = g.settings.taa && !manifest.animated && !g.is_panorama() && manifest.precision == "float" &&
             manifest.find_pass("taa") != nullptr;
     g.settings.taa = g.taa;
+    if (!g.taa) g.settings.output_width = g.settings.output_height = 0;
+    g.output_width = g.settings.shown_width();
+    g.output_height = g.settings.shown_height();
     // What the pack's shaders can do that an older fgc's could not.
     auto declares = [&](const char* program, const DispatchConstant& c) {
         const ManifestPass* p = manifest.find_pass(program);
@@ -285,7 +288,10 @@ std::string FrameGraph::describe() const {
                      settings.foveation > 0.0 ? fmt::format("fovea radius {:g}, blend {:g}", settings.foveation,
                                                             settings.foveation_blend)
                                               : std::string("off"));
-    if (taa) s += "anti-aliasing: temporal (jittered rays, a history per eye)\n";
+    if (taa)
+        s += output_width == width ? "anti-aliasing: temporal (jittered rays, a history per eye)\n"
+                                   : fmt::format("anti-aliasing: temporal upsampling to {}x{} per eye (jittered rays, a "
+                                                 "history per eye)\n", output_width, output_height);
     auto names = effects.names();
     s += "effects: " + (names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))) + "\n";
     s += fmt::format("images and buffers ({}):\n", images_.size() + buffers_.size());

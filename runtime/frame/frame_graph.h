@@ -151,6 +151,8 @@ public:
     bool is_panorama() const { return settings.projection != Projection::Perspective; }
 
     std::uint32_t width = 0, height = 0, centre_width = 0, centre_height = 0;
+    // The size of each eye's final image: the marched size, or temporal upsampling's output size.
+    std::uint32_t output_width = 0, output_height = 0;
     FrameSettings settings;
     EffectSet effects;
     std::uint32_t tail_after = 0;      // the tail_after knob: > 0 adds compacted tail passes

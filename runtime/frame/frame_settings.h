@@ -44,6 +44,14 @@ struct FrameSettings {
     // Temporal anti-aliasing: each frame's rays go through a jittered pixel grid, and a resolve pass
     // blends them into a history per eye (taa_pass.cpp). Static float scenes in perspective only.
     bool taa = false;
+    // Temporal upsampling: with taa, the taa pass resolves each eye to this size (0: width x height,
+    // the marched size) from frames marched at 1/taa_upscale_factor of it per axis (set_taa_upscale).
+    std::uint32_t output_width = 0, output_height = 0;
+    double taa_upscale_factor = 1.0;
+    bool taa_upscales() const { return taa && output_width && taa_upscale_factor > 1.0; }
+    std::uint32_t shown_width() const { return taa_upscales() ? output_width : width; }
+    std::uint32_t shown_height() const { return taa_upscales() ? output_height : height; }
+    double taa_upscale() const { return taa_upscales() ? taa_upscale_factor : 1.0; }
     // Output pixels are this many marched pixels wide (the supersampling factor; below 1 where an
     // image is shown larger than it was marched): the hit threshold and normal taps follow them.
     double detail_scale = 1.0;
@@ -55,5 +63,9 @@ struct FrameSettings {
     // relative to the camera (gpu_uniforms.h).
     bool camera_relative = false;
 };
+
+// Temporal upsampling by `factor` (1 = none): `f`'s width x height become the output size, marched
+// at 1/factor of it per axis, with the detail of the output pixel.
+void set_taa_upscale(FrameSettings& f, double factor);
 
 }  // namespace fg

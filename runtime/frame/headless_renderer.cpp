@@ -17,8 +17,7 @@ std::vector<float> floats(const std::vector<std::byte>& bytes) {
 HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame,
                                    const StereoSettings& stereo)
     : ctx_(ctx), pack_(pack), frame_(frame), detail_scale_(frame.detail_scale), stereo_(stereo) {
-    stereo_.width = frame.width;
-    stereo_.height = frame.height;
+    set_marched_size(stereo_, frame);
     // The frame graph's sizes depend only on the fields of view, not on the pose.
     views_ = make_views(scene_camera());
     executor_ = std::make_unique<FrameExecutor>(
@@ -63,7 +62,8 @@ RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::u
     out.stats = run(head, time, frame_index);
     bool mono = is_mono(frame_.projection);
     std::string left = mono ? "centre" : "left";
-    out.left = rgba8_from_bytes(executor_->download("final." + left), frame_.width, frame_.height);
+    const FrameGraph& g = executor_->graph();
+    out.left = rgba8_from_bytes(executor_->download("final." + left), g.output_width, g.output_height);
     out.depth_left = floats(executor_->download("depth." + left));
     auto download_aovs = [&](const std::string& eye, std::vector<std::vector<std::byte>>& into) {
         if (!frame_.aovs) return;
@@ -71,7 +71,7 @@ RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::u
     };
     download_aovs(left, out.aovs_left);
     if (!mono) {
-        out.right = rgba8_from_bytes(executor_->download("final.right"), frame_.width, frame_.height);
+        out.right = rgba8_from_bytes(executor_->download("final.right"), g.output_width, g.output_height);
         out.depth_right = floats(executor_->download("depth.right"));
         download_aovs("right", out.aovs_right);
     }

@@ -1,5 +1,6 @@
 #include "sample_jitter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fg {
@@ -17,8 +18,15 @@ glm::dvec2 halton_offset(std::uint32_t k) { return {radical_inverse(k, 2) - 0.5,
 
 }  // namespace
 
-glm::dvec2 taa_jitter(std::uint64_t history_frames) {
-    static const std::vector<glm::dvec2> pattern = sample_pattern(16);
+std::uint32_t taa_phases(double upscale) {
+    const auto side = static_cast<std::uint32_t>(std::lround(4.0 * std::max(1.0, upscale)));
+    return side * side;
+}
+
+glm::dvec2 taa_jitter(std::uint64_t history_frames, double upscale) {
+    static const std::vector<glm::dvec2> native = sample_pattern(taa_phases(1.0));
+    if (upscale <= 1.0) return native[history_frames % native.size()];
+    const std::vector<glm::dvec2> pattern = sample_pattern(taa_phases(upscale));
     return pattern[history_frames % pattern.size()];
 }
 

@@ -18,9 +18,14 @@ std::vector<glm::dvec2> sample_pattern(std::uint32_t n);
 // Frames a still view takes to average each of taa_jitter's 16 offsets once.
 inline constexpr std::uint32_t kRefinedFrames = 16;
 
+// The offsets temporal anti-aliasing cycles through, upsampling by `upscale` (1: none): a (4u)^2
+// grid over a marched pixel, so that each output pixel gets a 4x4 grid of samples, 16 as without
+// upsampling (36 offsets at 1.5, 64 at 2).
+std::uint32_t taa_phases(double upscale);
+
 // Temporal anti-aliasing's offset for the frame after `history_frames` frames of history
-// (FrameExecutor::history_frames): the 16 samples of sample_pattern(16) (a 4x4 grid), one per
+// (FrameExecutor::history_frames): the samples of sample_pattern(taa_phases(upscale)), one per
 // frame, repeating.
-glm::dvec2 taa_jitter(std::uint64_t history_frames);
+glm::dvec2 taa_jitter(std::uint64_t history_frames, double upscale = 1.0);
 
 }  // namespace fg

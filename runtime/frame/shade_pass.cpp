@@ -25,7 +25,7 @@ void add_shade_passes(FrameGraph& g) {
     const bool reuse_knob = knob != g.settings.knobs.end() && knob->second > 0.0;
     for (int view : g.output_views()) {
         std::string eye = view_name(view);
-        g.add_image({"final." + eye, g.width, g.height, ImageFormat::RGBA8, "final image"});
+        g.add_image({"final." + eye, g.output_width, g.output_height, ImageFormat::RGBA8, "final image"});
         if (g.taa) g.add_image({g.shaded_image(view), g.width, g.height, ImageFormat::RGBA8, "this frame's jittered samples"});
         // Shading reuse: each eye keeps its shading before post effects, as terms (the colour without
         // the terms that read the view, and the albedo); the right eye reads the left eye's (shaded

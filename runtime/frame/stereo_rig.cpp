@@ -1,5 +1,7 @@
 #include "stereo_rig.h"
 
+#include "frame_settings.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,7 +34,27 @@ HeadPose look_at(const glm::dvec3& position, const glm::dvec3& target, const glm
     return {position, glm::quat_cast(m)};
 }
 
-StereoViews make_stereo_views(const HeadPose& head, const Fov& left, const Fov& right, const StereoSettings& s) {
+namespace {
+
+// The marched frustum of an output frustum `fov` under temporal upsampling (StereoSettings::upscale).
+Fov marched_fov(const Fov& fov, const StereoSettings& s) {
+    if (s.upscale <= 1.0 || !s.output_width || !s.output_height) return fov;
+    const double wide = s.width * s.upscale / s.output_width, tall = s.height * s.upscale / s.output_height;
+    return {fov.left, fov.left + (fov.right - fov.left) * wide, fov.up - (fov.up - fov.down) * tall, fov.up};
+}
+
+}  // namespace
+
+void set_marched_size(StereoSettings& s, const FrameSettings& f) {
+    s.width = f.width;
+    s.height = f.height;
+    s.upscale = f.taa_upscale();
+    s.output_width = f.shown_width();
+    s.output_height = f.shown_height();
+}
+
+StereoViews make_stereo_views(const HeadPose& head, const Fov& shown_left, const Fov& shown_right, const StereoSettings& s) {
+    const Fov left = marched_fov(shown_left, s), right = marched_fov(shown_right, s);
     StereoViews out;
     glm::dmat3 basis = glm::mat3_cast(head.orientation);
     glm::dvec3 r = basis[0], u = basis[1], f = -basis[2];

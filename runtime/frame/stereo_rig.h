@@ -49,11 +49,21 @@ struct StereoSettings {
     // reprojection, which only proves space empty, is never jittered. Panoramas take it too
     // (projection.h), every view alike.
     glm::dvec2 jitter{0.0};
+    // Temporal upsampling: each eye's output is `upscale` times `width` x `height` (FrameSettings::
+    // output_width), and a marched pixel exactly `upscale` output pixels: the marched frustum
+    // reaches past the output's, right and down, where the output size is no multiple of it.
+    double upscale = 1.0;
+    std::uint32_t output_width = 0, output_height = 0;
 };
 
 // The frustum of `fov` moved by `pixels` (x right, y down) of a `width` x `height` image: every
 // pass that makes or projects rays through a view's frustum then agrees on the jittered rays.
 Fov jittered(const Fov& fov, glm::dvec2 pixels, std::uint32_t width, std::uint32_t height);
+
+struct FrameSettings;
+
+// The eyes' sizes of the frames `f` marches, and temporal upsampling's output (above).
+void set_marched_size(StereoSettings& s, const FrameSettings& f);
 
 StereoViews make_stereo_views(const HeadPose& head, const Fov& left, const Fov& right, const StereoSettings& s);
 

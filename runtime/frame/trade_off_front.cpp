@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -20,6 +21,8 @@ std::vector<TradeOff> pareto_front(std::vector<TradeOff> settings) {
     // Walking from the cheapest, a setting earns its place only by being more accurate than every
     // cheaper one: paying more time for no less error is never a step up.
     std::vector<TradeOff> front;
+    // Ordered by misclassification, a setting whose depths were not measured has no place.
+    if (!by_picture) std::erase_if(settings, [](const TradeOff& t) { return std::isnan(t.wrong_pct); });
     for (auto& s : settings)
         if (front.empty() || s.error(by_picture) < front.back().error(by_picture)) front.push_back(std::move(s));
     return front;
@@ -30,8 +33,9 @@ nlohmann::json trade_off_settings_json(const FrameSettings& f, std::uint32_t ben
             {"cone_levels", f.cone_levels},
             {"lens_mask", f.lens_mask},
             {"foveation", std::max(f.foveation, 0.0)},
-            {"render_scale", bench_size ? static_cast<double>(f.width) / bench_size : 1.0},
+            {"render_scale", bench_size ? static_cast<double>(f.shown_width()) / bench_size : 1.0},
             {"taa", f.taa},
+            {"taa_upscale", f.taa_upscale()},
             {"knobs", f.knobs}};
 }
 
@@ -67,6 +71,11 @@ void read_trade_off_settings(const nlohmann::json& j, const std::string& pointer
     if (auto taa = j.find("taa"); taa != j.end()) {
         if (!taa->is_boolean()) throw TradeOffError(pointer + "/taa", "expected true or false");
         out.frame.taa = taa->get<bool>();
+    }
+    if (auto upscale = j.find("taa_upscale"); upscale != j.end()) {
+        out.taa_upscale = number(*upscale, pointer + "/taa_upscale", 1.0, 2.0);
+        if (out.taa_upscale > 1.0 && !out.frame.taa)
+            throw TradeOffError(pointer + "/taa_upscale", "temporal upsampling without \"taa\": true");
     }
     const auto& knobs = member(j, pointer, "knobs");
     if (!knobs.is_object()) throw TradeOffError(pointer + "/knobs", "expected an object of knob values");
@@ -109,7 +118,12 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
         const auto& pass_ms = member(row, at, "pass_ms");
         double ms = number(member(pass_ms, at + "/pass_ms", "frame"), at + "/pass_ms/frame", 0.0, 1e7);
         if (ms <= 0.0) throw TradeOffError(at + "/pass_ms/frame", "no GPU time (the benchmark's device had no timestamps?)");
-        double wrong = number(member(row, at, "wrong_pct"), at + "/wrong_pct", 0.0, 100.0);
+        // Null where the benchmark could not compare the depths (temporal upsampling): such a row
+        // is judged by its picture alone.
+        const auto& wrong_json = member(row, at, "wrong_pct");
+        double wrong = wrong_json.is_null() && row.contains("picture_psnr_db")
+                           ? std::numeric_limits<double>::quiet_NaN()
+                           : number(wrong_json, at + "/wrong_pct", 0.0, 100.0);
         // The picture's PSNR (fgplay bench --sequence) as a mean squared error on a [0, 1] scale.
         double mse = -1.0;
         if (row.contains("picture_psnr_db"))
@@ -120,7 +134,8 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
             s.first = at;
         } else if (s.views > 0 && (t.frame.stereo != s.t.frame.stereo || t.frame.knobs != s.t.frame.knobs ||
                                    t.frame.foveation != s.t.frame.foveation || t.render_scale != s.t.render_scale ||
-                                   t.frame.cone_levels != s.t.frame.cone_levels || t.frame.taa != s.t.frame.taa)) {
+                                   t.frame.cone_levels != s.t.frame.cone_levels || t.frame.taa != s.t.frame.taa ||
+                                   t.taa_upscale != s.t.taa_upscale)) {
             throw TradeOffError(at + "/settings", fmt::format("setting \"{}\" differs from its row {}", t.setting, s.first));
         } else if (s.views == 0) {
             s.t = t;

@@ -18,6 +18,7 @@ namespace fg {
 struct TradeOff {
     std::string setting;       // the benchmark's name for it: "foveation 0.5"
     FrameSettings frame;       // width and height are not used: see render_scale
+    double taa_upscale = 1.0;       // temporal upsampling's factor (frame.taa), 1 without
     double render_scale = 1.0; // of the per-eye size the benchmark measured at
     double time_ms = 0.0;      // GPU time per stereo frame, summed over the views
     double wrong_pct = 0.0;    // misclassified pixels, mean over the views

@@ -16,6 +16,7 @@ std::vector<GovernorLevel> trade_off_ladder(const PackManifest& manifest, const 
         level.stereo = it->frame.stereo;
         level.cone_levels = it->frame.cone_levels;
         level.taa = it->frame.taa;
+        level.taa_upscale = it->taa_upscale;
         for (const auto& [k, v] : it->frame.knobs) {
             const auto* spec = manifest.find_spec(k);
             if (!spec)
@@ -36,8 +37,8 @@ std::string describe_trade_off_ladder(const std::vector<TradeOff>& front) {
     std::string s;
     for (std::size_t i = 0; i < front.size(); ++i) {
         const TradeOff& t = front[front.size() - 1 - i];
-        s += fmt::format("{}  level {}: \"{}\", {:.1f} ms, {:.3f} % misclassified", i ? "\n" : "", i, t.setting, t.time_ms,
-                         t.wrong_pct);
+        s += fmt::format("{}  level {}: \"{}\", {:.1f} ms", i ? "\n" : "", i, t.setting, t.time_ms);
+        if (!std::isnan(t.wrong_pct)) s += fmt::format(", {:.3f} % misclassified", t.wrong_pct);
         if (t.picture_mse > 0.0) s += fmt::format(", picture {:.1f} dB", -10.0 * std::log10(t.picture_mse));
     }
     return s;

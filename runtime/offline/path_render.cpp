@@ -25,6 +25,7 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     // Every sample hits by the output pixel: the same fractal as 1 spp, only less aliased.
     f.detail_scale = s.supersample / s.detail;
     f.taa = s.taa;
+    set_taa_upscale(f, s.taa_upscale);
     f.stereo = s.stereo;
     f.projection = s.projection;
     f.cone_levels = s.cone_levels;
@@ -61,6 +62,7 @@ std::string settings_fingerprint(const PathRenderSettings& s) {
     std::string sampling = s.samples > 1 ? fmt::format(" samples{}", s.samples) : "";
     if (s.detail != 1.0) sampling += fmt::format(" detail{}", s.detail);
     if (s.taa) sampling += " taa";
+    if (s.taa_upscale > 1.0) sampling += fmt::format(" upscale{}", s.taa_upscale);
     return fmt::format("{} {} {}x{} ss{}{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
                        stereo_mode_name(s.stereo), s.width, s.height, s.supersample, sampling, s.cone_levels, s.ipd_m,
                        knobs, format);
@@ -77,6 +79,8 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
         throw std::runtime_error(fmt::format("--samples is 1 to {}", kMaxSamples));
     if (settings_.taa && settings_.projection != Projection::Perspective)
         throw std::runtime_error("--taa is for perspective frames, as a headset sees them");
+    if (settings_.taa_upscale > 1.0 && (!settings_.taa || settings_.format != OutputFormat::Png))
+        throw std::runtime_error("--taa-upscale needs --taa and --format png (the passes of an EXR are the marched size)");
     if (settings_.taa && settings_.samples > 1) throw std::runtime_error("--taa and --samples both jitter the rays: choose one");
     StereoSettings stereo;
     stereo.ipd_m = settings_.ipd_m;

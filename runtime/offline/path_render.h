@@ -23,6 +23,7 @@ struct PathRenderSettings {
     std::uint32_t samples = 1;                // jittered frames averaged per frame (perspective)
     double detail = 1.0;                      // the hit threshold is 1 / detail of an output pixel
     bool taa = false;                         // temporal anti-aliasing, history from frame to frame
+    double taa_upscale = 1.0;                 // with taa: temporal upsampling (marched at 1/this per axis)
     std::uint32_t cone_levels = 5;
     double ipd_m = 0.064;
     std::map<std::string, double> knobs;

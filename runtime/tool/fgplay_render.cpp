@@ -51,6 +51,11 @@ int render(const RenderOptions& o) {
         frame.tile_dispatch = !o.whole_dispatch;
         frame.detail_scale = 1.0 / o.detail;
         frame.taa = o.taa;
+        if (o.taa_upscale > 1.0 && !o.taa) {
+            fmt::print(stderr, "fgplay: --taa-upscale resolves through temporal anti-aliasing: add --taa\n");
+            return 2;
+        }
+        set_taa_upscale(frame, o.taa_upscale);
         if (o.taa && o.samples > 1) {
             fmt::print(stderr, "fgplay: --taa and --samples both jitter the rays: choose one\n");
             return 2;
@@ -78,8 +83,10 @@ int render(const RenderOptions& o) {
             write_png(path("right"), r.right);
             write_png(path("side_by_side"), side_by_side(r.left, r.right));
             if (o.depth) {
-                write_depth_png16(path("depth_left"), r.depth_left, o.width, o.height, static_cast<float>(scene.max_distance));
-                write_depth_png16(path("depth_right"), r.depth_right, o.width, o.height, static_cast<float>(scene.max_distance));
+                // The marched depths: upsampling marches fewer pixels than it shows.
+                const FrameGraph& g = renderer.graph();
+                write_depth_png16(path("depth_left"), r.depth_left, g.width, g.height, static_cast<float>(scene.max_distance));
+                write_depth_png16(path("depth_right"), r.depth_right, g.width, g.height, static_cast<float>(scene.max_distance));
             }
             std::string times;
             for (const auto& [group, ms] : r.stats.gpu_ms)
@@ -92,6 +99,8 @@ int render(const RenderOptions& o) {
                 return list;
             };
             std::string samples = o.samples > 1 ? fmt::format(", {} samples summed", o.samples) : "";
+            if (renderer.graph().output_width != renderer.graph().width)
+                samples += fmt::format(", marched at {}x{}", renderer.graph().width, renderer.graph().height);
             fmt::print("frame {}: {} stereo {}x{} per eye{}; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height, samples,
                        times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
             if (o.time_passes) print_pass_times(r.stats.gpu_ms);

@@ -29,6 +29,7 @@ struct RenderOptions {
     std::uint32_t samples = 1;       // jittered frames averaged per picture (offline/jittered_samples.h)
     double detail = 1.0;             // the hit threshold and normal taps: 1 / detail of an output pixel
     bool taa = false;                // temporal anti-aliasing (with --frames or --path: history carried)
+    double taa_upscale = 1.0;        // temporal upsampling: marched at 1/this of the size per axis
     OutputFormat format = OutputFormat::Png;
     ExrCompression compression = ExrCompression::Zip;
     bool resume = false;

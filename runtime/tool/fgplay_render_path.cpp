@@ -60,6 +60,7 @@ int render_path(const RenderOptions& o) {
     s.samples = o.samples;
     s.detail = o.detail;
     s.taa = o.taa;
+    s.taa_upscale = o.taa_upscale;
     s.cone_levels = o.cone_levels;
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;

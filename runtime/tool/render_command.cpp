@@ -37,6 +37,11 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_flag("--taa", r.taa,
                      "temporal anti-aliasing as a headset runs it: jittered rays every frame, blended into a history "
                      "per eye (static scenes; the frames of --frames N or --path carry it from one to the next)");
+    render->add_option("--taa-upscale", r.taa_upscale,
+                       "temporal upsampling (with --taa): march 1/F of the size per axis and resolve to the full size "
+                       "(1.5 or 2: fewer rays, softer under motion; a still view refines to 16 samples per pixel)")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0, 2.0));
     render->add_option("--format", c.format,
                        "with --path: png | png16 (16-bit, from the HDR beauty) | exr (OpenEXR with the beauty and "
                        "passes for compositing)")

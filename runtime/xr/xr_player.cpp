@@ -107,8 +107,7 @@ public:
         base_detail_scale_ = frame_.detail_scale =
             static_cast<double>(base_width_) / std::max(views[0].recommendedImageRectWidth, views[1].recommendedImageRectWidth);
         if (o.governor) apply(governor_->current());
-        stereo_.width = frame_.width;
-        stereo_.height = frame_.height;
+        set_marched_size(stereo_, frame_);
         stereo_.world_scale = scene_.world_scale;
         step_ = std::make_unique<ViewerStep>(ctx, pack, origin_, o.wrap);
         if (o.check_collisions) witness_ = std::make_unique<CollisionWitness>(pack);
@@ -377,8 +376,7 @@ private:
         }
         if (!changed) return;
         apply(governor_->current());
-        stereo_.width = frame_.width;
-        stereo_.height = frame_.height;
+        set_marched_size(stereo_, frame_);
         rebuild_ = true;
     }
 

@@ -169,6 +169,7 @@ struct FoveaPush {
 
 struct TaaPush {
     int view;
+    float upscale;   // output pixels per marched pixel (temporal upsampling), 1 without
 };
 
 struct ProbePush {

@@ -23,16 +23,25 @@
 // When the head stops (GpuFrame.still_frames), each pixel averages its samples with equal weights:
 // progressive refinement, the picture of 16 samples per pixel after 16 still frames.
 //
+// Temporal upsampling: the frame is marched at 1/1.5 or 1/2 of the output size per axis, and this
+// pass writes the output size. Each output pixel takes the marched sample nearest to its centre,
+// weighted by how far outside the pixel it falls, so a pixel fills from the samples that land in it
+// as the jitter moves them over it (taa_phases: 36 or 64 offsets, 16 per output pixel). The history
+// keeps each pixel's weight of samples (alpha): a new sample's share is its weight over the total,
+// the total capped at 1 / blend - 1 under motion (so a pixel that just lost its history fills in
+// at once), uncapped when still (a plain mean). Where history is lost, the pixel starts from the
+// marched frame filtered up to the output size.
+//
 // The history holds the tone-mapped colour in linear light, so it converges to the mean of the
 // samples as --samples averages them; working after the tone map keeps one bright highlight from
 // dominating a neighbourhood.
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 3, rgba8) uniform readonly image2D fg_jittered;     // this frame, display-encoded
+layout(set = 0, binding = 3, rgba8) uniform readonly image2D fg_jittered;     // this frame, display-encoded, marched size
 layout(set = 0, binding = 4, r32f) uniform readonly image2D fg_depth;         // this frame's hit distances
-layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_history;    // the previous frame's result, linear
+layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_history;    // the previous result, linear; alpha: weight
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_history_depth;
-layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_resolved;  // this frame's result, linear
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_resolved;  // this frame's result, output size
 layout(set = 0, binding = 8, r32f) uniform writeonly image2D fg_resolved_depth;
 layout(set = 0, binding = 9, rgba8) uniform writeonly image2D fg_final;       // the result, display-encoded
 layout(push_constant) uniform FgTaaPush { TaaPush pc; };
@@ -42,6 +51,7 @@ const float kMovingBlend = 0.2;    // ... at one pixel of motion per frame and b
 const float kInFront = 0.95;       // history is rejected where the previous depth is nearer than this
 const float kStillSigmas = 1.5;    // the clip box: mean +- this many standard deviations, still
 const float kMovingSigmas = 1.0;   // ... at one pixel of motion per frame and beyond
+const float kOutsideFalloff = 0.25;  // output pixels: a sample this far outside a pixel weighs e^-0.5
 
 vec3 fg_ycocg(vec3 c)
 {
@@ -64,10 +74,11 @@ float fg_kept()
 // Below this much of the picture left, 8-bit values hold too little of it to unfade.
 const float kFadedOut = 0.05;
 
-// A pixel of this frame as displayed (sRGB-encoded) without the fade, clamped to the image.
+// A marched sample of this frame in linear light without the fade, clamped to the image.
 vec3 fg_current(ivec2 pixel, ivec2 size)
 {
-    return min(imageLoad(fg_jittered, clamp(pixel, ivec2(0), size - 1)).rgb / max(fg_kept(), kFadedOut), vec3(1.0));
+    vec3 shown = imageLoad(fg_jittered, clamp(pixel, ivec2(0), size - 1)).rgb;
+    return fg_srgb_to_linear(min(shown / max(fg_kept(), kFadedOut), vec3(1.0)));
 }
 
 // The history at a continuous position (pixel units, texel centres at i + 0.5): a Catmull-Rom
@@ -108,16 +119,17 @@ float fg_farthest_before(ivec2 texel, ivec2 size)
     return farthest;
 }
 
-// Where this pixel's sample was in the previous frame's image, in its unjittered pixel coordinates
-// (texel centres at i + 0.5), or a negative x when it was behind that view.
-vec2 fg_previous_position(GpuView o, vec3 towards, ivec2 size)
+// Where a point (or a miss's direction) was in the previous frame's output image, in its
+// unjittered pixel coordinates (texel centres at i + 0.5), or a negative x when it was behind that
+// view: its place in the previous marched frame of `size` pixels, `upscale` output pixels each.
+vec2 fg_previous_position(GpuView o, vec3 towards, ivec2 size, float upscale)
 {
     float z = dot(towards, o.forward.xyz);
     if (z <= 0.0) return vec2(-1.0);
     vec2 tangent = vec2(dot(towards, o.right.xyz), dot(towards, o.up.xyz)) / z;
     vec2 uv = vec2((tangent.x - o.tan_fov.x) / (o.tan_fov.y - o.tan_fov.x),
                    (o.tan_fov.w - tangent.y) / (o.tan_fov.w - o.tan_fov.z));
-    return uv * vec2(size) + fg_frame.jitter.zw;
+    return (uv * vec2(size) + fg_frame.jitter.zw) * upscale;
 }
 
 // Clips q towards the box's centre onto the box (Playdead's clip: keeps the history's hue where a
@@ -132,52 +144,87 @@ vec3 fg_clip(vec3 q, vec3 centre, vec3 extent)
 
 void main()
 {
-    ivec2 size = ivec2(fg_frame.eye_size);
+    ivec2 size = ivec2(fg_frame.eye_size);   // marched
+    ivec2 out_size = imageSize(fg_final);
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
-    vec3 current = fg_srgb_to_linear(fg_current(pixel, size));
-    float t = imageLoad(fg_depth, pixel).x;
-    imageStore(fg_resolved_depth, pixel, vec4(t));
-    vec3 result = current;
-    if (fg_frame.taa_history != 0u && !fg_outside_lens(pc.view, pixel) && fg_kept() >= kFadedOut) {
-        // The neighbourhood's colour statistics, for the clip box.
-        vec3 m1 = vec3(0.0), m2 = vec3(0.0);
-        for (int j = -1; j <= 1; ++j)
-            for (int i = -1; i <= 1; ++i) {
-                vec3 y = fg_ycocg(fg_srgb_to_linear(fg_current(pixel + ivec2(i, j), size)));
-                m1 += y;
-                m2 += y * y;
-            }
-        m1 /= 9.0;
-        vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
+    if (pixel.x >= out_size.x || pixel.y >= out_size.y) return;
+    // Output pixels per marched pixel, exactly: the marched frustum reaches past the output's where
+    // the output is no multiple of it (stereo_rig.h).
+    float scale = pc.upscale;
+    bool upsampling = scale > 1.0;
+    vec2 centre = vec2(pixel) + 0.5;
+    // The marched sample nearest the pixel's centre (marched pixel k's sample lies at k + 0.5 +
+    // the jitter), its offset from the centre in output pixels, and its weight for this pixel: 1
+    // inside it (always, without upsampling), falling off outside.
+    ivec2 k = clamp(ivec2(floor(centre / scale - fg_frame.jitter.xy)), ivec2(0), size - 1);
+    vec2 offset = (vec2(k) + 0.5 + fg_frame.jitter.xy) * scale - centre;
+    vec2 outside = max(abs(offset) - 0.5, vec2(0.0));
+    bool inside = outside == vec2(0.0);
+    float weight = exp(-0.5 * dot(outside, outside) / (kOutsideFalloff * kOutsideFalloff));
 
+    vec3 current = fg_current(k, size);
+    float t = imageLoad(fg_depth, k).x;
+    imageStore(fg_resolved_depth, pixel, vec4(t));
+    // The neighbourhood's colour statistics, for the clip box, and upsampling, the marched frame
+    // filtered to this pixel (a Gaussian of a pixel's width), where history is lost.
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0), filtered = vec3(0.0);
+    float filtered_weight = 0.0;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            vec3 c = fg_current(k + ivec2(i, j), size);
+            vec3 y = fg_ycocg(c);
+            m1 += y;
+            m2 += y * y;
+            vec2 d = offset + vec2(i, j) * scale;
+            float g = exp(-2.0 * dot(d, d));
+            filtered += g * c;
+            filtered_weight += g;
+        }
+    m1 /= 9.0;
+    vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
+    vec3 result = upsampling ? filtered / filtered_weight : current;
+    float samples = 1.0;   // the weight of samples the result holds
+
+    if (fg_frame.taa_history != 0u && !fg_outside_lens(pc.view, centre / scale / vec2(size), vec2(0.0)) &&
+        fg_kept() >= kFadedOut) {
         GpuView o = fg_frame.previous[pc.view];
-        vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
+        vec2 uv = (vec2(k) + 0.5) / vec2(size);
         vec3 rd = fg_ray_dir(pc.view, uv);
         vec3 p = fg_ray_origin(pc.view, uv) + rd * t;
         // A miss is a point at infinity: only its direction moves it.
         vec3 towards = t < 0.0 ? rd : p - o.origin.xyz;
-        vec2 q = fg_previous_position(o, towards, size);
-        vec2 at = q - fg_frame.jitter.xy;
-        bool seen = q.x >= 0.0 && all(greaterThanEqual(at, vec2(0.0))) && all(lessThan(at, vec2(size)));
+        vec2 q = fg_previous_position(o, towards, size, scale);
+        // Where this pixel was: the sample's previous position less its offset from the centre.
+        vec2 at = q - offset;
+        bool seen = q.x >= 0.0 && all(greaterThanEqual(at, vec2(0.0))) && all(lessThan(at, vec2(out_size)));
         if (seen) {
             float here = t < 0.0 ? 1e30 : length(towards);
-            seen = fg_farthest_before(ivec2(floor(at)), size) >= kInFront * here;
+            seen = fg_farthest_before(ivec2(floor(at)), out_size) >= kInFront * here;
         }
         if (fg_frame.still_frames > 0u) {
-            // A still head: the history is this pixel's own, a plain mean of the samples since the
-            // head stopped (and the picture before, as one sample), so it converges to their mean.
-            vec3 history = imageLoad(fg_history, pixel).rgb;
-            result = mix(history, current, 1.0 / float(fg_frame.still_frames + 1u));
+            // A still head: the history is this pixel's own, a plain mean of the samples that fell in
+            // it since the head stopped (and the picture before, as one sample), so it converges to
+            // their mean, the pixel's area sampled evenly.
+            vec4 history = imageLoad(fg_history, pixel);
+            // (Upsampled, that picture is the marched one filtered up, blurred: it weighs as little
+            // as one marched pixel's share of the output's.)
+            float before = fg_frame.still_frames == 1u ? min(history.a, 1.0 / (scale * scale)) : history.a;
+            float w = inside ? 1.0 : 0.0;
+            samples = before + w;
+            result = (history.rgb * before + current * w) / samples;
         } else if (seen) {
-            float motion = length(at - (vec2(pixel) + 0.5));
-            float sigmas = mix(kStillSigmas, kMovingSigmas, clamp(motion, 0.0, 1.0));
-            vec3 history = fg_rgb(fg_clip(fg_ycocg(fg_history_at(at, size)), m1, sigmas * sigma));
+            float motion = length(at - centre);
+            // Upsampled, the box comes from marched pixels `scale` output pixels apart: it is as much wider
+            // (1 / scale tighter cost the bulb 2 dB under motion at 2, scale wider gained 0.8).
+            float sigmas = mix(kStillSigmas, kMovingSigmas, clamp(motion, 0.0, 1.0)) * scale;
+            vec3 history = fg_rgb(fg_clip(fg_ycocg(fg_history_at(at, out_size)), m1, sigmas * sigma));
             float blend = mix(kStillBlend, kMovingBlend, clamp(motion, 0.0, 1.0));
-            result = mix(history, current, blend);
+            float before = min(imageLoad(fg_history, ivec2(floor(at))).a, 1.0 / blend - 1.0);
+            samples = before + weight;
+            result = (history * before + current * weight) / samples;
         }
     }
     vec3 rgb = max(result, vec3(0.0));
-    imageStore(fg_resolved, pixel, vec4(rgb, 1.0));
+    imageStore(fg_resolved, pixel, vec4(rgb, samples));
     imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(rgb) * fg_kept(), 1.0));
 }
