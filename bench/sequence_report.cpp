@@ -1,6 +1,7 @@
 #include "sequence_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -157,12 +158,15 @@ void SequenceReport::write(const std::string& folder) const {
         csv << fmt::format("{},{},{},{},{},{},{},{},{:g},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f}", r.scene, r.trace,
                            r.setting.name(), r.setting.method, r.setting.pixels, stereo_mode_name(f.stereo),
                            lanes != f.knobs.end() && lanes->second != 0.0 ? 1 : 0, f.lens_mask ? 1 : 0,
-                           std::max(0.0, f.foveation), f.width, r.rendered, r.dark, r.counted, r.median_ms, r.p99_ms,
+                           std::max(0.0, f.foveation), f.shown_width(), r.rendered, r.dark, r.counted, r.median_ms, r.p99_ms,
                            r.worst_ms, r.after_march_share, r.evaluations_per_pixel, r.iterations_per_pixel);
         for (const auto& g : groups) csv << "," << lane_cell(r, g);
-        csv << fmt::format(",{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{:.2f},{:.2f},{:.3f},{:.3f},{}\n",
-                           r.misclassified_mean, r.misclassified_worst, r.overstepped_mean, r.overstepped_worst,
-                           r.overstepped_march_mean, r.overstepped_march_worst, r.not_finite_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
+        // Empty where the depths were not compared (temporal upsampling).
+        auto percent = [](double v) { return std::isnan(v) ? std::string() : fmt::format("{:.4f}", v); };
+        csv << fmt::format(",{},{},{},{},{},{},{},{:.2f},{:.2f},{:.3f},{},{},{},{},{:.2f},{:.2f},{:.3f},{:.3f},{}\n",
+                           percent(r.misclassified_mean), percent(r.misclassified_worst), percent(r.overstepped_mean),
+                           percent(r.overstepped_worst), percent(r.overstepped_march_mean),
+                           percent(r.overstepped_march_worst), r.not_finite_worst, r.psnr_mean, r.psnr_worst, r.reuse_skipped_fraction,
                            ratio_cell(r.speedup_median_naive), ratio_cell(r.speedup_p99_naive),
                            ratio_cell(r.speedup_median_naive_lanes), ratio_cell(r.speedup_p99_naive_lanes),
                            r.picture_psnr_median, r.picture_psnr_worst, r.flicker_median, r.flicker_worst,

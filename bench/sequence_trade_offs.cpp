@@ -20,9 +20,9 @@ nlohmann::json sequence_trade_offs_json(const SequenceReport& report, const std:
                              {"settings", trade_off_settings_json(r.setting.frame, report.size)},
                              {"pass_ms", {{"frame", r.median_ms}}},
                              {"frame_ms_p99", r.p99_ms},
-                             {"wrong_pct", r.misclassified_mean},
+                             {"wrong_pct", optional_number(r.misclassified_mean)},
                              {"picture_psnr_db", r.picture_psnr_median},
-                             {"overstepped_pct", r.overstepped_mean},
+                             {"overstepped_pct", optional_number(r.overstepped_mean)},
                              {"error", error}});
     }
     try {

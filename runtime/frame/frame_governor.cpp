@@ -11,7 +11,7 @@ std::string GovernorLevel::describe() const {
     std::string s = name.empty() ? "" : fmt::format("\"{}\": ", name);
     if (stereo) s += fmt::format("{}, ", stereo_mode_name(*stereo));
     if (cone_levels) s += fmt::format("{} cone levels, ", *cone_levels);
-    if (taa && *taa) s += taa_upscale > 1.0 ? fmt::format("TAA upsampling from 1/{:g}, ", taa_upscale) : "TAA, ";
+    if (taa && *taa) s += taa_upscale.value_or(1.0) > 1.0 ? fmt::format("TAA upsampling from 1/{:g}, ", *taa_upscale) : "TAA, ";
     s += fmt::format("scale {:.2f}, foveation {}", render_scale, foveation > 0.0 ? fmt::format("{:.2f}", foveation) : foveation < 0.0 ? "as the scene says" : "off");
     for (const auto& [k, v] : knobs) s += fmt::format(", {} {}", k, v);
     return s;
@@ -97,7 +97,8 @@ FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& 
     f.stereo = level.stereo.value_or(full.stereo);
     f.cone_levels = level.cone_levels.value_or(full.cone_levels);
     f.taa = level.taa.value_or(full.taa);
-    set_taa_upscale(f, f.taa ? level.taa_upscale : 1.0);
+    f.output_width = f.output_height = 0;
+    set_taa_upscale(f, f.taa ? level.taa_upscale.value_or(full.taa_upscale_factor) : 1.0);
     for (const auto& [k, v] : level.knobs) f.knobs[k] = v;
     return f;
 }

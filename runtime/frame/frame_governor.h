@@ -28,7 +28,7 @@ struct GovernorLevel {
     std::optional<StereoMode> stereo;
     std::optional<std::uint32_t> cone_levels;
     std::optional<bool> taa;             // temporal anti-aliasing, where the ladder says
-    double taa_upscale = 1.0;            // with it, temporal upsampling from 1/this of the render size
+    std::optional<double> taa_upscale;   // with it, temporal upsampling from 1/this of the render size
     std::string describe() const;
 };
 
@@ -37,7 +37,8 @@ struct GovernorLevel {
 std::vector<GovernorLevel> governor_ladder(const PackManifest& manifest);
 
 // The frame settings at `level`: `full` (full accuracy) at the level's render scale of `width` x
-// `height`, with its foveation, and its stereo mode, cone levels and knobs where it sets them.
+// `height`, with its foveation, and its stereo mode, cone levels, anti-aliasing and knobs where it
+// sets them (else full's: its taa_upscale_factor is the player's own upsampling).
 FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& level, std::uint32_t width,
                                 std::uint32_t height);
 

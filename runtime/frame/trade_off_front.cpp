@@ -28,6 +28,8 @@ std::vector<TradeOff> pareto_front(std::vector<TradeOff> settings) {
     return front;
 }
 
+nlohmann::json optional_number(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
+
 nlohmann::json trade_off_settings_json(const FrameSettings& f, std::uint32_t bench_size) {
     return {{"stereo", stereo_mode_name(f.stereo)},
             {"cone_levels", f.cone_levels},
@@ -162,7 +164,7 @@ std::vector<TradeOff> trade_offs_from_bench_json(const nlohmann::json& results) 
 nlohmann::json trade_off_front_json(const nlohmann::json& results) {
     auto front = nlohmann::json::array();
     for (const auto& t : trade_offs_from_bench_json(results)) {
-        nlohmann::json entry{{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", t.wrong_pct}};
+        nlohmann::json entry{{"setting", t.setting}, {"time_ms", t.time_ms}, {"wrong_pct", optional_number(t.wrong_pct)}};
         if (t.picture_mse > 0.0) entry["picture_psnr_db"] = -10.0 * std::log10(t.picture_mse);
         front.push_back(std::move(entry));
     }

@@ -39,6 +39,9 @@ struct TradeOffError : std::runtime_error {
 // Cheapest first. A setting that another one matches or beats on both time and error is not on it.
 std::vector<TradeOff> pareto_front(std::vector<TradeOff> settings);
 
+// A measure as JSON: null where it was not measured (NaN).
+nlohmann::json optional_number(double v);
+
 // How a setting is written into results.json ("settings" of each row), and read back. `bench_size`
 // is the per-eye size the benchmark ran at, so a resolution setting becomes a render scale.
 nlohmann::json trade_off_settings_json(const FrameSettings& f, std::uint32_t bench_size);

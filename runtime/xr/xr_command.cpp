@@ -31,6 +31,10 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
                                  "keep absolute coordinates in looping scenes (to compare)");
     c.command->add_flag("--taa", c.options.taa,
                         "temporal anti-aliasing: jittered rays blended into a history per eye (static scenes)");
+    c.command->add_option("--taa-upscale", c.options.taa_upscale,
+                          "with --taa: march 1/F of the swapchain's size per axis (1.5 or 2) and resolve to all of it")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0, 2.0));
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");

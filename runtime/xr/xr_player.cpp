@@ -107,6 +107,7 @@ public:
         base_detail_scale_ = frame_.detail_scale =
             static_cast<double>(base_width_) / std::max(views[0].recommendedImageRectWidth, views[1].recommendedImageRectWidth);
         if (o.governor) apply(governor_->current());
+        else set_taa_upscale(frame_, frame_.taa ? o.taa_upscale : 1.0);
         set_marched_size(stereo_, frame_);
         stereo_.world_scale = scene_.world_scale;
         step_ = std::make_unique<ViewerStep>(ctx, pack, origin_, o.wrap);
@@ -411,6 +412,7 @@ private:
         full.cone_levels = options_.cone_levels;
         full.knobs = options_.knobs;
         full.detail_scale = base_detail_scale_;
+        full.taa_upscale_factor = options_.taa_upscale;
         frame_ = settings_at_level(full, level, base_width_, base_height_);
     }
 

@@ -32,6 +32,7 @@ struct XrPlayOptions {
     double controller_speed = 1.0;       // the trigger's full pull, as a throttle
     bool wrap = true;                    // wrap the head by whole periods in looping scenes
     bool taa = false;                    // temporal anti-aliasing (static scenes)
+    double taa_upscale = 1.0;            // with it, temporal upsampling from 1/this of the size per axis
     std::string record;                  // folder: each submitted frame's eyes as PNG, as fgplay render writes them
 };
 

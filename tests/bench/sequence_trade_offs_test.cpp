@@ -4,9 +4,12 @@
 // out.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "frame/trade_off_front.h"
+#include "frame/trade_off_ladder.h"
 #include "scratch_dir.h"
 #include "sequence_settings.h"
 #include "sequence_trade_offs.h"
@@ -16,8 +19,9 @@ namespace {
 
 constexpr std::uint32_t kSize = 128;
 
-// A row of `frames` rendered frames, each taking `ms` and misclassifying `wrong` percent, its
-// picture `picture_db` from the ground truth (by default the worse, the more pixels are wrong).
+// A row of `frames` rendered frames, each taking `ms` and misclassifying `wrong` percent (NaN: its
+// depths not compared), its picture `picture_db` from the ground truth (by default the worse, the
+// more pixels are wrong).
 SequenceRow row(const std::string& scene, const std::string& trace, const SequenceSetting& setting, double ms,
                 double wrong, int frames = 3, double picture_db = -1.0) {
     SequenceRow r;
@@ -29,6 +33,7 @@ SequenceRow row(const std::string& scene, const std::string& trace, const Sequen
         f.index = i;
         f.gpu_ms = ms;
         f.compared = true;
+        f.depths_compared = !std::isnan(wrong);
         f.misclassified_pct = wrong;
         f.picture_psnr = picture_db >= 0.0 ? picture_db : 50.0 - 20.0 * wrong;
         r.frames.push_back(f);
@@ -109,6 +114,41 @@ TEST(SequenceTradeOffs, anti_aliasing_earns_its_rung_by_the_pictures_error) {
     EXPECT_EQ(front[1].setting, "per-eye + TAA");
     EXPECT_TRUE(front[1].frame.taa);
     EXPECT_NEAR(j["trade_offs"][1]["picture_psnr_db"].get<double>(), 33.0, 1e-9);
+}
+
+TEST(SequenceTradeOffs, temporal_upsampling_is_judged_by_its_picture_and_keeps_its_factor) {
+    // TAAU marches fewer pixels than the reference: its depths are not compared, only its picture.
+    const auto settings = make_sequence_settings(kSize, true);
+    const double unmeasured = std::numeric_limits<double>::quiet_NaN();
+    SequenceReport report;
+    report.size = kSize;
+    for (const char* trace : {"look_around", "walk"}) {
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye"), 30.0, 0.25, 3, 29.0));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye + TAA"), 33.0, 0.25, 3, 33.0));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye + TAAU 2"), 12.0, unmeasured, 3, 29.5));
+        report.rows.push_back(row("mandelbulb", trace, setting(settings, "per-eye + TAAU 1.5"), 31.0, unmeasured, 3, 30.0));
+    }
+    const nlohmann::json j = sequence_trade_offs_json(report, "mandelbulb");
+    test::ScratchDir dir{"fg_sequence_trade_offs_taau"};
+    std::ofstream(dir / "trade_offs_mandelbulb.json") << j.dump(1);
+    const std::vector<TradeOff> front = read_trade_offs((dir / "trade_offs_mandelbulb.json").string());
+    // Per-eye costs more than TAAU 2 for a worse picture, TAAU 1.5 more than TAAU 2 for less than TAA.
+    ASSERT_EQ(front.size(), 3u) << j["trade_offs"].dump();
+    EXPECT_EQ(front[0].setting, "per-eye + TAAU 2");
+    EXPECT_EQ(front[1].setting, "per-eye + TAAU 1.5");
+    EXPECT_EQ(front[2].setting, "per-eye + TAA");
+    EXPECT_TRUE(j["trade_offs"][0]["wrong_pct"].is_null());
+    EXPECT_DOUBLE_EQ(front[0].taa_upscale, 2.0);
+    EXPECT_DOUBLE_EQ(front[0].render_scale, 1.0);
+    EXPECT_DOUBLE_EQ(front[2].taa_upscale, 1.0);
+    // The governor's level marches a quarter of the pixels and shows all of them.
+    const GovernorLevel level = trade_off_ladder(PackManifest{}, front).back();
+    FrameSettings full;
+    const FrameSettings f = settings_at_level(full, level, 96, 96);
+    EXPECT_TRUE(f.taa);
+    EXPECT_EQ(f.width, 48u);
+    EXPECT_EQ(f.shown_width(), 96u);
+    EXPECT_DOUBLE_EQ(f.detail_scale, 0.5);
 }
 
 TEST(SequenceTradeOffs, a_scene_with_no_setting_measured_on_every_trace_says_why_it_has_no_front) {

@@ -132,6 +132,11 @@ elseif(CASE STREQUAL "temporal_anti_aliasing_shows_its_resolved_frames_in_the_he
   list(APPEND env FG_XR_TEST_COLOUR_PNGS=${WORK}/png)
   list(APPEND args --frames 6 --no-governor --taa --record ${WORK}/png)
   set(expect_frames 6)
+elseif(CASE STREQUAL "temporal_upsampling_fills_the_swapchain_from_a_quarter_of_the_rays")
+  # --taa-upscale 2: 48x48 marched per eye, resolved to the swapchain's 96x96, which shows them.
+  list(APPEND env FG_XR_TEST_COLOUR_PNGS=${WORK}/png)
+  list(APPEND args --frames 4 --no-governor --taa --taa-upscale 2 --record ${WORK}/png)
+  set(expect_frames 4)
 elseif(CASE STREQUAL "a_scene_that_asks_for_foveation_is_foveated_in_the_headset")
   # The pack's scene has a foveation block and the user says nothing: its frames carry the fovea
   # the frame graph was built with (a frame without it would leave the periphery unmarched).
@@ -241,7 +246,7 @@ elseif(expect_frames GREATER 0 AND (mask_calls LESS 2 OR NOT out MATCHES "the en
 endif()
 string(JSON colour_compared GET ${json} colour eyes_compared)
 string(JSON swapchains GET ${json} swapchains)
-if(CASE MATCHES "^the_headset_shows_the_png_colour|^a_runtime_recommending")
+if(CASE MATCHES "^the_headset_shows_the_png_colour|^a_runtime_recommending|^temporal_upsampling")
   math(EXPR eyes "2 * ${expect_frames}")
   if(NOT colour_compared EQUAL eyes)
     message(FATAL_ERROR "the runtime compared ${colour_compared} eyes with fgplay's PNGs, expected ${eyes}")
