@@ -166,17 +166,18 @@ void main()
     float t = imageLoad(fg_depth, k).x;
     imageStore(fg_resolved_depth, pixel, vec4(t));
     // The neighbourhood's colour statistics, for the clip box, and upsampling, the marched frame
-    // filtered to this pixel (a Gaussian of a pixel's width), where history is lost.
+    // filtered to this pixel (a Gaussian of a pixel's width, separable), where history is lost.
     vec3 m1 = vec3(0.0), m2 = vec3(0.0), filtered = vec3(0.0);
     float filtered_weight = 0.0;
+    vec3 gx = exp(-2.0 * pow(offset.x + vec3(-scale, 0.0, scale), vec3(2.0)));
+    vec3 gy = exp(-2.0 * pow(offset.y + vec3(-scale, 0.0, scale), vec3(2.0)));
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
             vec3 c = fg_current(k + ivec2(i, j), size);
             vec3 y = fg_ycocg(c);
             m1 += y;
             m2 += y * y;
-            vec2 d = offset + vec2(i, j) * scale;
-            float g = exp(-2.0 * dot(d, d));
+            float g = gx[i + 1] * gy[j + 1];
             filtered += g * c;
             filtered_weight += g;
         }
