@@ -25,6 +25,8 @@ EffectSet find_effects(const IrGraph& ir) {
     if (ir.outputs.count("sss")) e.add(Effect::Subsurface);
     if (ir.outputs.count("rim")) e.add(Effect::Rim);
     if (ir.outputs.count("emission")) e.add(Effect::Emission);
+    if (ir.outputs.count("shadow")) e.add(Effect::Shadow);
+    if (ir.outputs.count("specular")) e.add(Effect::Specular);
 
     const auto& s = ir.scene;
     if (s.fog) e.add(Effect::Fog);

@@ -24,6 +24,8 @@ enum class Effect : std::uint32_t {
     Vignette,            // comfort / look vignette (post)
     BackgroundGradient,  // two-colour sky instead of a flat background
     Foveation,           // half-resolution periphery, blended (scene asks for it)
+    Shadow,              // the light's visibility, marched towards it (light.soft_shadow)
+    Specular,            // specular highlights (light.specular)
     Count
 };
 

@@ -179,6 +179,8 @@ CpuSurface CpuEvaluator::surface(const glm::dvec3& p, const CpuShadeInputs& shad
     if (auto v = get("sss")) s.sss = v->f();
     if (auto v = get("rim")) s.rim = v->f();
     if (auto v = get("emission")) s.emission = v->v3();
+    if (auto v = get("shadow")) s.shadow = v->f();
+    if (auto v = get("specular")) s.specular = v->v3();
     return s;
 }
 

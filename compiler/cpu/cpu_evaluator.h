@@ -23,8 +23,9 @@ struct CpuShadeInputs {
 
 struct CpuSurface {
     glm::dvec3 albedo{0.8};
-    std::optional<double> diffuse, ao, sss, rim;
+    std::optional<double> diffuse, ao, sss, rim, shadow;
     glm::dvec3 emission{0.0};
+    glm::dvec3 specular{0.0};
 };
 
 class CpuEvaluator {

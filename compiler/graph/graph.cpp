@@ -23,6 +23,8 @@ const std::vector<GraphOutputSpec>& graph_output_specs() {
         {"sss", ValueType::Float, false, "subsurface scattering factor"},
         {"rim", ValueType::Float, false, "rim light factor"},
         {"emission", ValueType::Vec3, false, "emitted colour, added after lighting"},
+        {"shadow", ValueType::Float, false, "how much of the light reaches the point, in [0, 1] (light.soft_shadow); scales diffuse and specular"},
+        {"specular", ValueType::Vec3, false, "specular reflectance towards the camera (light.specular), times the light's colour and the shadow"},
     };
     return specs;
 }

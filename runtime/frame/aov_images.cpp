@@ -5,12 +5,13 @@
 namespace fg {
 
 std::span<const AovImage> aov_images() {
-    static constexpr std::array<AovImage, 5> images{{
+    static constexpr std::array<AovImage, 6> images{{
         {"fg_beauty", "beauty", ImageFormat::RGBA16F, "HDR beauty before the tone map"},
         {"fg_position", "position", ImageFormat::RGBA32F, "world position, camera depth in metres"},
         {"fg_normal", "normal", ImageFormat::RGBA16F, "normal, AO"},
         {"fg_albedo", "albedo", ImageFormat::RGBA16F, "albedo, diffuse factor"},
         {"fg_trap", "trap", ImageFormat::RGBA16F, "orbit trap"},
+        {"fg_light", "light", ImageFormat::RGBA16F, "specular reflectance, shadow"},
     }};
     return images;
 }

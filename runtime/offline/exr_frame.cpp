@@ -55,6 +55,8 @@ constexpr Channel kChannels[] = {
     {"albedo.R", "albedo", 0, Imf::HALF}, {"albedo.G", "albedo", 1, Imf::HALF}, {"albedo.B", "albedo", 2, Imf::HALF},
     {"diffuse.Y", "albedo", 3, Imf::HALF}, {"trap.X", "trap", 0, Imf::HALF},   {"trap.Y", "trap", 1, Imf::HALF},
     {"trap.Z", "trap", 2, Imf::HALF},    {"trap.W", "trap", 3, Imf::HALF},
+    {"specular.R", "light", 0, Imf::HALF}, {"specular.G", "light", 1, Imf::HALF}, {"specular.B", "light", 2, Imf::HALF},
+    {"shadow.Y", "light", 3, Imf::HALF},
 };
 
 Imath::M44f to_imath(const ExrMatrix& rows) {

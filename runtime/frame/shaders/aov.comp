@@ -5,7 +5,7 @@
 //! include-after-scene: shading.glsl
 // The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
 // beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse
-// factor and the orbit trap. Runs only when an offline render asks for them; it shades each hit
+// factor, the orbit trap, the specular reflectance and the shadow. Runs only when an offline render asks for them; it shades each hit
 // once more with the shade pass's own functions, so the beauty is the picture's colour.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -18,6 +18,7 @@ layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D fg_position;   /
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_normal;     // xyz unit normal, w AO
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D fg_albedo;     // rgb albedo, w diffuse factor
 layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D fg_trap;       // the fractal's orbit trap
+layout(set = 0, binding = 10, rgba16f) uniform writeonly image2D fg_light;     // rgb specular, w shadow
 layout(push_constant) uniform FgAovPush { AovPush pc; };
 
 void main()
@@ -41,6 +42,7 @@ void main()
         imageStore(fg_normal, pixel, vec4(0.0));
         imageStore(fg_albedo, pixel, vec4(0.0));
         imageStore(fg_trap, pixel, vec4(0.0));
+        imageStore(fg_light, pixel, vec4(0.0));
         return;
     }
     vec3 p = ro + rd * t;
@@ -65,4 +67,5 @@ void main()
     imageStore(fg_normal, pixel, vec4(n, s.ao));
     imageStore(fg_albedo, pixel, vec4(s.albedo, s.diffuse));
     imageStore(fg_trap, pixel, fg_scene_trap(p));
+    imageStore(fg_light, pixel, vec4(s.specular, s.shadow));
 }

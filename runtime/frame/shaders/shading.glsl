@@ -48,6 +48,8 @@ struct FgShading {
     vec3 albedo;
     float diffuse;   // the light's diffuse factor
     float ao;
+    float shadow;    // how much of the light reaches the point
+    vec3 specular;   // the specular reflectance towards the camera
     FgSurface surface;   // the graph's outputs it came from
 };
 
@@ -67,7 +69,20 @@ FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n)
 #else
     float ao = 1.0;
 #endif
-    vec3 color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse);
+#ifdef FG_HAS_SHADOW
+    float shadow = s.shadow;
+#else
+    float shadow = 1.0;
+#endif
+#ifdef FG_HAS_SPECULAR
+    vec3 specular = s.specular;
+#else
+    vec3 specular = vec3(0.0);
+#endif
+    // The light reaches the point by its shadow: diffusely scattered by the albedo, and reflected
+    // by the specular lobe.
+    vec3 color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse * shadow) +
+                 fg_scene.light_color.rgb * specular * shadow;
 #ifdef FG_HAS_SSS
     color += s.sss * fg_scene.sss_color.rgb * s.albedo;
 #endif
@@ -77,5 +92,5 @@ FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n)
 #ifdef FG_HAS_EMISSION
     color += s.emission;
 #endif
-    return FgShading(color, s.albedo, diffuse, ao, s);
+    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, s);
 }

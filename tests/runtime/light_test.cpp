@@ -1,0 +1,158 @@
+// The light nodes against closed-form answers, on real frames (the `light` AOV: specular rgb,
+// shadow alpha): a sphere over a plane lit at 45 degrees casts its shadow where the geometry puts
+// it, with a penumbra as wide as the light's angular size makes it at each edge; a highlight peaks
+// where the normal halves the angle between the light and the camera.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fmt/format.h>
+
+#include <Imath/half.h>
+
+#include "frame/aov_images.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::RuntimeTest;
+
+namespace {
+
+constexpr std::uint32_t kSize = 160;
+constexpr double kFovDeg = 40.0;
+
+// The `light` AOV of the left eye as floats, four per pixel.
+std::vector<float> light_aov(const RenderedFrame& f) {
+    std::size_t index = 0;
+    for (const auto& a : aov_images()) {
+        if (std::string(a.name) == "light") break;
+        ++index;
+    }
+    const auto& bytes = f.aovs_left.at(index);
+    std::vector<float> out(bytes.size() / sizeof(Imath::half));
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        Imath::half h;
+        std::memcpy(&h, bytes.data() + i * sizeof h, sizeof h);
+        out[i] = h;
+    }
+    return out;
+}
+
+RenderedFrame render(const Pack& pack) {
+    FrameSettings fs;
+    fs.width = fs.height = kSize;
+    fs.stereo = StereoMode::Naive;
+    fs.aovs = true;
+    StereoSettings stereo{kSize, kSize};
+    stereo.ipd_m = 0.0;   // the left eye at the camera
+    HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+    return r.render(r.scene_camera(), 0.0);
+}
+
+// The solution r of 0.25 (1 + r)^2 (2 - r) = level (soft_shadow.glsl's profile), by bisection.
+double passage_at(double level) {
+    double lo = -1.0, hi = 1.0;
+    for (int i = 0; i < 60; ++i) {
+        double mid = 0.5 * (lo + hi);
+        (0.25 * (1 + mid) * (1 + mid) * (2 - mid) < level ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+class Light : public RuntimeTest {};
+
+}  // namespace
+
+TEST_F(Light, a_sphere_over_a_plane_casts_the_shadow_the_geometry_puts_with_its_penumbra) {
+    // Sphere of radius 0.3 at height 1 over the plane y = 0, the light 45 degrees up from +x, a
+    // light of 2 degrees' radius; the camera 3 above the shadow, looking straight down.
+    const double radius = 0.3, height = 1.0, angle_deg = 2.0;
+    Pack pack = test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "sphere over a plane",
+      "nodes": [
+        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, {1}, 0.0]}}}},
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
+        {{"id": "ground", "type": "prim.plane"}},
+        {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
+        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": 0.002, "max_distance": 6.0, "steps": 256}}}}
+      ],
+      "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow"}},
+      "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
+                "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
+    }})", radius, height, angle_deg, kFovDeg));
+    RenderedFrame f = render(pack);
+    const std::vector<float> light = light_aov(f);
+    // The plane's x at a column of the centre row (z = 0).
+    const double half_width = 3.0 * std::tan(glm::radians(kFovDeg / 2.0));
+    auto x_of = [&](double column) { return -1.0 + (column / kSize - 0.5) * 2.0 * half_width; };
+    const std::size_t row = kSize / 2;
+    std::vector<double> shadow(kSize);
+    for (std::size_t x = 0; x < kSize; ++x) shadow[x] = light[4 * (row * kSize + x) + 3];
+    // Where the row crosses a level, in columns (pixel centres at x + 0.5), between two columns.
+    auto crossing = [&](double level, std::size_t from, std::size_t to) {
+        for (std::size_t x = from; x + 1 < to; ++x)
+            if ((shadow[x] - level) * (shadow[x + 1] - level) <= 0.0 && shadow[x] != shadow[x + 1])
+                return x + 0.5 + (level - shadow[x]) / (shadow[x + 1] - shadow[x]);
+        return -1.0;
+    };
+    const double pixel = 2.0 * half_width / kSize;
+    // The geometric shadow: the sphere's shadow along x spans [-h - r / cos 45, -h + r / cos 45].
+    const double far_edge = -height - radius * std::sqrt(2.0), near_edge = -height + radius * std::sqrt(2.0);
+    std::size_t centre = static_cast<std::size_t>((-height + 1.0) / (2.0 * half_width) * kSize + kSize / 2.0);
+    ASSERT_LT(shadow[centre], 0.01) << "the shadow's centre is lit";
+    const double far50 = x_of(crossing(0.5, 2, centre)), near50 = x_of(crossing(0.5, centre, kSize - 10));
+    // The penumbra: a light of angular radius a seen past the sphere from t away spans 2 t tan(a)
+    // across the ray, 2 t tan(a) / cos 45 along the plane; 10 % to 90 % of it is the profile's share.
+    const glm::dvec3 sphere(0.0, height, 0.0);
+    auto width = [&](double edge_x) {
+        const double t = std::sqrt(glm::dot(sphere - glm::dvec3(edge_x, 0, 0), sphere - glm::dvec3(edge_x, 0, 0)) - radius * radius);
+        return (passage_at(0.9) - passage_at(0.1)) * t * std::tan(glm::radians(angle_deg)) * std::sqrt(2.0);
+    };
+    const double far_width = std::abs(x_of(crossing(0.9, 2, centre)) - x_of(crossing(0.1, 2, centre)));
+    const double near_width = std::abs(x_of(crossing(0.9, centre, kSize - 10)) - x_of(crossing(0.1, centre, kSize - 10)));
+    std::string figures = fmt::format(
+        "shadow edges at x = {:.4f} and {:.4f} (geometry {:.4f}, {:.4f}); penumbrae 10-90 % {:.4f} and {:.4f} wide "
+        "(geometry {:.4f}, {:.4f}); a pixel is {:.4f}",
+        far50, near50, far_edge, near_edge, far_width, near_width, width(far_edge), width(near_edge), pixel);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_NEAR(far50, far_edge, pixel) << figures;
+    EXPECT_NEAR(near50, near_edge, pixel) << figures;
+    EXPECT_NEAR(far_width, width(far_edge), pixel) << figures;
+    EXPECT_NEAR(near_width, width(near_edge), pixel) << figures;
+    EXPECT_GT(far_width, near_width + pixel) << "the penumbra widens with the distance to the occluder: " << figures;
+}
+
+TEST_F(Light, a_highlight_peaks_where_the_normal_halves_the_light_and_the_view) {
+    const glm::dvec3 camera(0.0, 0.0, 4.0), light = glm::normalize(glm::dvec3(1.0, 1.0, 1.0));
+    Pack pack = test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "glossy ball",
+      "nodes": [
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"radius": 1.0}}}},
+        {{"id": "gloss", "type": "light.specular", "inputs": {{"roughness": 0.15}}}}
+      ],
+      "outputs": {{"distance": "ball.distance", "specular": "gloss.specular"}},
+      "scene": {{"camera": {{"position": [0, 0, 4], "target": [0, 0, 0], "fov_deg": {0}}},
+                "light": {{"direction": [{1}, {1}, {1}]}}}}
+    }})", kFovDeg, light.x));
+    RenderedFrame f = render(pack);
+    const std::vector<float> aov = light_aov(f);
+    std::size_t brightest = 0;
+    for (std::size_t i = 1; i < aov.size() / 4; ++i)
+        if (aov[4 * i] > aov[4 * brightest]) brightest = i;
+    // The point whose normal halves the light and the direction to the camera from it.
+    glm::dvec3 n = glm::normalize(light + glm::normalize(camera));
+    for (int i = 0; i < 50; ++i) n = glm::normalize(light + glm::normalize(camera - n));
+    const double tan_half = std::tan(glm::radians(kFovDeg / 2.0));
+    const double column = (0.5 + 0.5 * n.x / (camera.z - n.z) / tan_half) * kSize;
+    const double row = (0.5 - 0.5 * n.y / (camera.z - n.z) / tan_half) * kSize;
+    const double seen_column = static_cast<double>(brightest % kSize) + 0.5, seen_row = static_cast<double>(brightest / kSize) + 0.5;
+    std::string figures = fmt::format("highlight peak at pixel ({:.1f}, {:.1f}), the halfway normal's point at ({:.1f}, {:.1f}); "
+                                      "peak specular {:.2f}",
+                                      seen_column, seen_row, column, row, aov[4 * brightest]);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_NEAR(seen_column, column, 1.5) << figures;
+    EXPECT_NEAR(seen_row, row, 1.5) << figures;
+    EXPECT_GT(aov[4 * brightest], 1.0) << "a rough-0.15 GGX lobe peaks well above 1: " << figures;
+}
