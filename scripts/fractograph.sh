@@ -108,8 +108,9 @@ run_fuzzers() {
 # float and in double (85 s and 44 s, mostly glslang and spirv-val under ASan's allocator; the other
 # compile tests and the compiler's fuzzer run our compiler under ASan).
 SANITIZE_SKIP='^FrameHashes\.|^studio\.browser|^slurm\.|^ExrOutput\.an_8k|^fgplay\.renders_refuses_bad_packs_and_benchmarks$|^Pack\.every_truncation|^FoveatedTiles\.an_eye_of_more_tiles_than_a_dispatch_row|^FoveatedTiles\.frames_are_bit_identical_to_dispatches_over_the_whole_image$|^Compile\.every_gallery_graph_compiles|^DoublePrecision\.the_gallery_compiles_in_double'
-run_sanitized_tests() {
-  local san=$BUILD-sanitize start=$SECONDS
+SANITIZE_BUILD=$BUILD-sanitize
+build_sanitized() {
+  local san=$SANITIZE_BUILD
   if [ ! -f "$san/build.ninja" ]; then
     cmake -S "$ROOT" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
       -DFG_SANITIZE=ON -DFG_BUILD_BENCH=OFF >/dev/null
@@ -118,7 +119,10 @@ run_sanitized_tests() {
   run_logged "$san/build.log" cmake --build "$san" -j "$JOBS"
   # Not instrumented: it is preloaded into every process of the run, cmake and bash included.
   cc -shared -fPIC -O2 -o "$san/libkeep_layers_loaded.so" "$ROOT/tests/sanitizers/keep_layers_loaded.c"
-  local built=$((SECONDS - start))
+}
+
+run_sanitized_tests() {
+  local san=$SANITIZE_BUILD
   say "running the tests under ASan + UBSan"
   # Leaks inside Debian's validation layers and OpenXR loader are theirs (tests/sanitizers/lsan.supp).
   (cd "$san" && MESA_SHADER_CACHE_DIR=$san/mesa-cache LD_PRELOAD=$san/libkeep_layers_loaded.so \
@@ -126,17 +130,40 @@ run_sanitized_tests() {
     LSAN_OPTIONS=suppressions=$ROOT/tests/sanitizers/lsan.supp:print_suppressions=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --output-on-failure -j "$JOBS" --timeout 1500 -E "$SANITIZE_SKIP")
-  say "sanitizer build $((built / 60)) min, its tests $(((SECONDS - start - built) / 60)) min"
+}
+
+run_tests() {
+  say "running tests"
+  (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" --timeout 1500)
+}
+
+# `test` times each stage against a budget in minutes (measured on 2 cores with the packages
+# installed, plus a margin; they add up to 45), so a stage that grows says so in the log long
+# before the whole run nears CI's 90-minute limit.
+STAGE_TIMES=()
+stage() {
+  local name=$1 budget=$2 start=$SECONDS
+  shift 2
+  "$@"
+  local took=$((SECONDS - start))
+  STAGE_TIMES+=("$(awk -v n="$name" -v t="$took" -v b="$budget" 'BEGIN { printf "  %-22s %5.1f min  (budget %d)", n, t / 60, b }')")
+  say "stage '$name' took $(awk -v t="$took" 'BEGIN { printf "%.1f", t / 60 }') min (budget $budget)"
+  if [ "$took" -gt $((budget * 60)) ]; then
+    printf '\033[1;33mwarning: stage %s took %d min %d s, over its budget of %d min: find what grew (docs/testing.md)\033[0m\n' \
+      "$name" $((took / 60)) $((took % 60)) "$budget"
+  fi
 }
 
 test_all() {
-  install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
-  build
-  say "running tests"
-  (cd "$BUILD" && ctest --output-on-failure -j "$JOBS" --timeout 1500)
-  run_sanitized_tests
-  run_fuzzers
-  say "all tests passed"
+  local start=$SECONDS
+  stage "install packages" 4 install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
+  stage "build" 9 build
+  stage "tests" 8 run_tests
+  stage "sanitizer build" 9 build_sanitized
+  stage "sanitizer tests" 12 run_sanitized_tests
+  stage "fuzzers" 3 run_fuzzers
+  say "all tests passed in $(((SECONDS - start) / 60)) min (budget 45):"
+  printf '%s\n' "${STAGE_TIMES[@]}"
 }
 
 case "${1:-}" in
