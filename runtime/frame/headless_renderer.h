@@ -37,6 +37,20 @@ public:
     FrameStats run(const HeadPose& head, double time, std::uint32_t frame_index = 0);
     // The sub-pixel offset of both eyes' pixel grids from the next frame on (StereoSettings::jitter).
     void set_jitter(glm::dvec2 pixels) { stereo_.jitter = pixels; }
+    // Depth of field for jittered samples (render_samples): a thin lens of `aperture` (its diameter,
+    // scene units; 0: a pinhole) focused `focus` scene units ahead.
+    void set_depth_of_field(double aperture, double focus) {
+        aperture_ = aperture;
+        focus_ = focus;
+    }
+    double aperture() const { return aperture_; }
+    double focus() const { return focus_; }
+    // From the next frame on, both eyes look from `offset` (scene units) off their lens's centre
+    // (StereoSettings::lens), focused at focus().
+    void set_lens(glm::dvec2 offset) {
+        stereo_.lens = offset;
+        stereo_.focus = offset == glm::dvec2(0.0) ? 0.0 : focus_;
+    }
     // Output pixels per marched pixel from the next frame on (FrameSettings::detail_scale: a picture
     // shown at another size than it is rendered); a change forgets the frames before.
     void set_detail_scale(double scale);
@@ -53,6 +67,7 @@ private:
     FrameSettings frame_;
     double detail_scale_ = 1.0;
     StereoSettings stereo_;
+    double aperture_ = 0.0, focus_ = 0.0;
     StereoViews views_;
     std::unique_ptr<FrameExecutor> executor_;
 };

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
+
 namespace fg {
 
 namespace {
@@ -17,6 +19,22 @@ double radical_inverse(std::uint32_t i, std::uint32_t base) {
 glm::dvec2 halton_offset(std::uint32_t k) { return {radical_inverse(k, 2) - 0.5, radical_inverse(k, 3) - 0.5}; }
 
 }  // namespace
+
+std::vector<glm::dvec2> lens_pattern(std::uint32_t n) {
+    std::vector<glm::dvec2> out;
+    for (std::uint32_t k = 1; k <= n; ++k) {
+        const double a = 2.0 * radical_inverse(k, 5) - 1.0, b = 2.0 * radical_inverse(k, 7) - 1.0;
+        if (a == 0.0 && b == 0.0) {
+            out.push_back(glm::dvec2(0.0));
+            continue;
+        }
+        const double quarter = 0.25 * glm::pi<double>();
+        const double r = std::abs(a) > std::abs(b) ? a : b;
+        const double phi = std::abs(a) > std::abs(b) ? quarter * (b / a) : 2.0 * quarter - quarter * (a / b);
+        out.push_back(r * glm::dvec2(std::cos(phi), std::sin(phi)));
+    }
+    return out;
+}
 
 std::uint32_t taa_phases(double upscale) {
     const auto side = static_cast<std::uint32_t>(std::lround(4.0 * std::max(1.0, upscale)));

@@ -18,6 +18,11 @@ std::vector<glm::dvec2> sample_pattern(std::uint32_t n);
 // Frames a still view takes to average each of taa_jitter's 16 offsets once.
 inline constexpr std::uint32_t kRefinedFrames = 16;
 
+// Where n samples fall on a lens of unit radius: the Halton (5, 7) points (not the bases of
+// sample_pattern, so a sample's lens position and its place in the pixel do not follow each other),
+// mapped to the disc by Shirley and Chiu's concentric map, which keeps them evenly spread.
+std::vector<glm::dvec2> lens_pattern(std::uint32_t n);
+
 // The offsets temporal anti-aliasing cycles through, upsampling by `upscale` (1: none): a (4u)^2
 // grid over a marched pixel, so that each output pixel gets a 4x4 grid of samples, 16 as without
 // upsampling (36 offsets at 1.5, 64 at 2).

@@ -88,6 +88,12 @@ StereoViews make_stereo_views(const HeadPose& head, const Fov& shown_left, const
     double cx = 0.5 * (l + rr), cy = 0.5 * (d + up);
     c.fov = {cx - 0.5 * c.width * dx, cx + 0.5 * c.width * dx, cy - 0.5 * c.height * dy, cy + 0.5 * c.height * dy};
     out.centre = c;
+    if (s.focus > 0.0)
+        for (View* v : {&out.left, &out.right}) {
+            v->origin += r * s.lens.x + u * s.lens.y;
+            const double dx = s.lens.x / s.focus, dy = s.lens.y / s.focus;
+            v->fov = {v->fov.left - dx, v->fov.right - dx, v->fov.down - dy, v->fov.up - dy};
+        }
     out.left.fov = jittered(out.left.fov, s.jitter, s.width, s.height);
     out.right.fov = jittered(out.right.fov, s.jitter, s.width, s.height);
     out.jitter = s.jitter;

@@ -54,6 +54,11 @@ struct StereoSettings {
     // reaches past the output's, right and down, where the output size is no multiple of it.
     double upscale = 1.0;
     std::uint32_t output_width = 0, output_height = 0;
+    // A thin lens (depth of field, offline samples): each eye looks from `lens` (scene units, x
+    // right, y up) off its centre on the lens, its frustum sheared so that the plane `focus` ahead
+    // stays where it was. None where focus is 0.
+    glm::dvec2 lens{0.0};
+    double focus = 0.0;
 };
 
 // The frustum of `fov` moved by `pixels` (x right, y down) of a `width` x `height` image: every

@@ -28,8 +28,10 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const HeadPose& head, d
     SampleAccumulator left, right;
     std::vector<float> beauty_left, beauty_right;
     const std::vector<glm::dvec2> pattern = sample_pattern(samples);
+    const std::vector<glm::dvec2> lens = lens_pattern(samples);
     for (std::uint32_t k = 0; k < samples; ++k) {
         renderer.set_jitter(pattern[k]);
+        if (renderer.aperture() > 0.0) renderer.set_lens(lens[k] * (0.5 * renderer.aperture()));
         RenderedFrame r = renderer.render(head, time, frame_index);
         left.add(r.left);
         if (!r.right.pixels.empty()) right.add(r.right);
@@ -42,6 +44,7 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const HeadPose& head, d
         }
     }
     renderer.set_jitter(glm::dvec2(0.0));
+    renderer.set_lens(glm::dvec2(0.0));
     first.left = left.mean();
     if (right.samples() > 0) first.right = right.mean();
     if (!beauty_left.empty()) mean_beauty(first.aovs_left, beauty_left, samples);

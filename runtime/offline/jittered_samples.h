@@ -11,6 +11,8 @@ namespace fg {
 
 inline constexpr std::uint32_t kMaxSamples = 4096;
 
+// With the renderer's depth of field (HeadlessRenderer::set_depth_of_field), each sample also
+// looks through its own point of the lens (lens_pattern), so the mean is the thin lens's picture.
 // The first sample's frame with its pictures (and beauty AOVs) replaced by the mean of all
 // `samples`; depth and the other AOVs stay the first sample's. Stats are summed over the samples.
 // The renderer's jitter is none again afterwards.

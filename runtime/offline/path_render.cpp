@@ -12,6 +12,7 @@
 #include "jittered_samples.h"
 #include "path_params.h"
 #include "progress_bar.h"
+#include "depth_of_field.h"
 #include "supersample.h"
 
 namespace fg {
@@ -63,6 +64,7 @@ std::string settings_fingerprint(const PathRenderSettings& s) {
     if (s.detail != 1.0) sampling += fmt::format(" detail{}", s.detail);
     if (s.taa) sampling += " taa";
     if (s.taa_upscale > 1.0) sampling += fmt::format(" upscale{}", s.taa_upscale);
+    if (s.aperture > 0.0) sampling += fmt::format(" lens{}@{}", s.aperture, s.focus);
     return fmt::format("{} {} {}x{} ss{}{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
                        stereo_mode_name(s.stereo), s.width, s.height, s.supersample, sampling, s.cone_levels, s.ipd_m,
                        knobs, format);
@@ -81,6 +83,8 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
         throw std::runtime_error("--taa is for perspective frames, as a headset sees them");
     if (settings_.taa_upscale > 1.0 && (!settings_.taa || settings_.format != OutputFormat::Png))
         throw std::runtime_error("--taa-upscale needs --taa and --format png (the passes of an EXR are the marched size)");
+    if (settings_.aperture > 0.0 && (settings_.samples < 2 || settings_.projection != Projection::Perspective))
+        throw std::runtime_error("--aperture blurs by averaging --samples N through the lens, in perspective frames");
     if (settings_.taa && settings_.samples > 1) throw std::runtime_error("--taa and --samples both jitter the rays: choose one");
     StereoSettings stereo;
     stereo.ipd_m = settings_.ipd_m;
@@ -96,6 +100,8 @@ OfflineFrame PathRenderer::render_frame(int frame) {
     FrameExecutor& executor = renderer_->executor();
     for (const auto& [name, value] : s.params)
         if (const ManifestParam* p = executor.manifest().find_param(name)) executor.set_param(name, keyed_param_value(*p, value));
+    if (settings_.aperture > 0.0)
+        focus_depth_of_field(*renderer_, settings_.aperture, settings_.focus, s.head, s.time, static_cast<std::uint32_t>(frame));
     RenderedFrame r = render_samples(*renderer_, s.head, s.time, static_cast<std::uint32_t>(frame), settings_.samples);
     std::uint64_t evaluations = 0;
     for (const auto& [_, n] : r.stats.evaluations) evaluations += n;

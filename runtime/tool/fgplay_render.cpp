@@ -10,6 +10,7 @@
 #include "command_outcome.h"
 #include "frame/headless_renderer.h"
 #include "graph/scene_settings.h"
+#include "offline/depth_of_field.h"
 #include "offline/jittered_samples.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
@@ -56,6 +57,11 @@ int render(const RenderOptions& o) {
             return 2;
         }
         set_taa_upscale(frame, o.taa_upscale);
+        if (o.aperture > 0.0 && (o.samples < 2 || o.taa)) {
+            fmt::print(stderr, "fgplay: --aperture blurs by averaging samples through the lens: add --samples N (64 "
+                               "for a smooth blur), without --taa\n");
+            return 2;
+        }
         if (o.taa && o.samples > 1) {
             fmt::print(stderr, "fgplay: --taa and --samples both jitter the rays: choose one\n");
             return 2;
@@ -76,7 +82,13 @@ int render(const RenderOptions& o) {
         // A CPU rasteriser compiles each pipeline at its first dispatch: time the frames after one.
         if (o.time_passes) renderer.render(head, o.time, 0);
         for (int f = 0; f < o.frames; ++f) {
-            RenderedFrame r = render_samples(renderer, head, o.time + f / 90.0, static_cast<std::uint32_t>(f), o.samples);
+            const double time = o.time + f / 90.0;
+            if (o.aperture > 0.0) {
+                const double focus = focus_depth_of_field(renderer, o.aperture, o.focus, head, time, static_cast<std::uint32_t>(f));
+                fmt::print("depth of field: a lens {:g} wide focused {:.4g} ahead{}\n", o.aperture, focus,
+                           o.focus > 0.0 ? "" : " (at the view's centre)");
+            }
+            RenderedFrame r = render_samples(renderer, head, time, static_cast<std::uint32_t>(f), o.samples);
             std::string suffix = o.frames > 1 ? fmt::format("_{:04}", f) : "";
             auto path = [&](const std::string& name) { return (std::filesystem::path(o.out) / (name + suffix + ".png")).string(); };
             write_png(path("left"), r.left);

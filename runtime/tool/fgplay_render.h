@@ -30,6 +30,8 @@ struct RenderOptions {
     double detail = 1.0;             // the hit threshold and normal taps: 1 / detail of an output pixel
     bool taa = false;                // temporal anti-aliasing (with --frames or --path: history carried)
     double taa_upscale = 1.0;        // temporal upsampling: marched at 1/this of the size per axis
+    double aperture = 0.0;           // depth of field: the lens's diameter in scene units (0: pinhole)
+    double focus = 0.0;              // ... focused this far ahead (0: at what the view's centre sees)
     OutputFormat format = OutputFormat::Png;
     ExrCompression compression = ExrCompression::Zip;
     bool resume = false;

@@ -61,6 +61,8 @@ int render_path(const RenderOptions& o) {
     s.detail = o.detail;
     s.taa = o.taa;
     s.taa_upscale = o.taa_upscale;
+    s.aperture = o.aperture;
+    s.focus = o.focus;
     s.cone_levels = o.cone_levels;
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;

@@ -42,6 +42,14 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
                        "(1.5 or 2: fewer rays, softer under motion; a still view refines to 16 samples per pixel)")
         ->capture_default_str()
         ->check(CLI::Range(1.0, 2.0));
+    render->add_option("--aperture", r.aperture,
+                       "depth of field (with --samples): the thin lens's diameter in scene units; 0 is a pinhole")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    render->add_option("--focus", r.focus,
+                       "with --aperture: the distance in scene units that stays sharp (default: what the view's centre "
+                       "sees, each frame)")
+        ->check(CLI::PositiveNumber);
     render->add_option("--format", c.format,
                        "with --path: png | png16 (16-bit, from the HDR beauty) | exr (OpenEXR with the beauty and "
                        "passes for compositing)")

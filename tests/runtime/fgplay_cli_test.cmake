@@ -34,6 +34,10 @@ expect_failure("an output format without a path" "go with --path" ${FGPLAY} rend
 expect_failure("no samples" "--samples: Value 0 not in range" ${FGPLAY} render ${WORK}/bulb.fgpack --samples 0
                --out ${WORK}/x)
 
+expect_failure("depth of field without samples" "--aperture blurs by averaging samples through the lens" ${FGPLAY} render
+               ${WORK}/bulb.fgpack --size 32x32 --aperture 0.1 --out ${WORK}/x)
+expect_failure("temporal upsampling without temporal anti-aliasing" "--taa-upscale resolves through temporal" ${FGPLAY}
+               render ${WORK}/bulb.fgpack --size 32x32 --taa-upscale 2 --out ${WORK}/x)
 expect_failure("temporal anti-aliasing in shards" "--taa carries history from frame to frame" ${FGPLAY} render
                ${WORK}/bulb.fgpack --path ${SOURCE}/docs/mandelbulb_flight.json --taa --shard 0/2 --out ${WORK}/x)
 

@@ -1,0 +1,126 @@
+// Depth of field (a thin lens over jittered samples, offline/depth_of_field.h) against the thin
+// lens's closed form: an edge at the focus distance stays sharp (inside one pixel), and one at
+// twice the focus distance blurs by the circle of confusion, aperture * (1/focus - 1/distance)
+// across, within 10 %.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "offline/depth_of_field.h"
+#include "offline/linear_light.h"
+#include "offline/jittered_samples.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::RuntimeTest;
+
+namespace {
+
+constexpr std::uint32_t kSize = 128;
+constexpr double kFovDeg = 40.0, kFocus = 2.0, kAperture = 0.2;
+
+// A glowing wall whose front face is `distance` ahead and whose left edge is on the view's axis
+// (emission only: a lit edge would darken where the normal's taps reach round the corner).
+Pack wall_at(double distance) {
+    return test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "edge",
+      "nodes": [
+        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [10.0, 0.0, {0}]}}}},
+        {{"id": "wall", "type": "prim.box", "inputs": {{"p": "at.p", "size": [10.0, 10.0, 0.05]}}}},
+        {{"id": "glow", "type": "light.emission", "inputs": {{"color": [0.7, 0.7, 0.7], "intensity": 1.0, "mask": 1.0}}}}
+      ],
+      "outputs": {{"distance": "wall.distance", "emission": "glow.emission"}},
+      "scene": {{"camera": {{"position": [0, 0, 0], "target": [0, 0, -1], "fov_deg": {1}}},
+                "light": {{"direction": [0, 0, 1], "color": [0, 0, 0], "ambient": [0, 0, 0]}},
+                "background": [0, 0, 0], "bounds": {{"radius": 60}}}}
+    }})", -distance - 0.05, kFovDeg));
+}
+
+// The centre row's linear light over the wall's.
+std::vector<double> centre_row(const Rgba8Image& image) {
+    const std::size_t row = kSize / 2;
+    std::vector<double> light(kSize);
+    for (std::size_t x = 0; x < kSize; ++x) light[x] = srgb8_linear_table()[image.pixels[4 * (row * kSize + x)]];
+    const double wall = light[kSize - 4];
+    for (double& v : light) v /= wall;
+    return light;
+}
+
+// Pixels of the centre row partly covered by the wall (between 5 and 95 % of its light): 1 for a
+// sharp edge, which falls inside one pixel.
+std::size_t edge_pixels(const Rgba8Image& image) {
+    std::size_t n = 0;
+    for (double v : centre_row(image)) n += v > 0.05 && v < 0.95;
+    return n;
+}
+
+// The 10-90 % width in pixels of the edge along the centre row, between pixel centres.
+double edge_width(const Rgba8Image& image) {
+    const std::vector<double> light = centre_row(image);
+    const double wall = 1.0;
+    auto crossing = [&](double level) {
+        for (std::size_t x = 0; x + 1 < kSize; ++x)
+            if (light[x] < level * wall && light[x + 1] >= level * wall)
+                return x + (level * wall - light[x]) / (light[x + 1] - light[x]);
+        return -1.0;
+    };
+    return crossing(0.9) - crossing(0.1);
+}
+
+// The 10-90 % width of an edge blurred by a uniform disc of radius 1: where the disc's area left of
+// x reaches 10 % and 90 %.
+double disc_edge_width() {
+    auto area_left_of = [](double s) { return (std::acos(-s) + s * std::sqrt(1.0 - s * s)) / glm::pi<double>(); };
+    auto solve = [&](double level) {
+        double lo = -1.0, hi = 1.0;
+        for (int i = 0; i < 60; ++i) (area_left_of(0.5 * (lo + hi)) < level ? lo : hi) = 0.5 * (lo + hi);
+        return 0.5 * (lo + hi);
+    };
+    return solve(0.9) - solve(0.1);
+}
+
+Rgba8Image blurred(double distance) {
+    Pack pack = wall_at(distance);
+    FrameSettings fs;
+    fs.width = fs.height = kSize;
+    fs.stereo = StereoMode::Naive;
+    StereoSettings stereo{kSize, kSize};
+    stereo.ipd_m = 0.0;
+    HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+    focus_depth_of_field(r, kAperture, kFocus, r.scene_camera(), 0.0, 0);
+    return render_samples(r, r.scene_camera(), 0.0, 0, 64).left;
+}
+
+class DepthOfField : public RuntimeTest {};
+
+}  // namespace
+
+TEST_F(DepthOfField, an_edge_in_focus_stays_sharp_and_one_twice_as_far_blurs_by_the_circle_of_confusion) {
+    const std::size_t sharp = edge_pixels(blurred(kFocus));
+    const double far = edge_width(blurred(2.0 * kFocus));
+    // The circle of confusion's radius in pixels: half of aperture * (1/F - 1/d) radians.
+    const double pixel_tan = 2.0 * std::tan(glm::radians(kFovDeg / 2.0)) / kSize;
+    const double radius = 0.5 * kAperture * (1.0 / kFocus - 1.0 / (2.0 * kFocus)) / pixel_tan;
+    const double expected = disc_edge_width() * radius;
+    std::string figures = fmt::format("edge in focus across {} pixel(s); 10-90 % at twice the focus {:.2f} px, the thin lens {:.2f} px "
+                                      "(circle of confusion {:.2f} px across)",
+                                      sharp, far, expected, 2.0 * radius);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_LE(sharp, 1u) << figures;
+    EXPECT_NEAR(far, expected, 0.1 * expected) << figures;
+}
+
+TEST_F(DepthOfField, the_focus_defaults_to_what_the_view_centre_sees) {
+    Pack pack = wall_at(3.0);
+    FrameSettings fs;
+    fs.width = fs.height = 32;
+    StereoSettings stereo{32, 32};
+    stereo.ipd_m = 0.0;
+    HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+    // The centre pixel lies just right of the edge, on the wall 3 ahead.
+    EXPECT_NEAR(focus_depth_of_field(r, 0.1, 0.0, r.scene_camera(), 0.0, 0), 3.0, 0.01);
+    HeadPose away = look_at({0, 0, 0}, {-1, 0, 0});
+    EXPECT_THROW(focus_depth_of_field(r, 0.1, 0.0, away, 0.0, 0), std::runtime_error);
+}
