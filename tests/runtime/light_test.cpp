@@ -156,3 +156,49 @@ TEST_F(Light, a_highlight_peaks_where_the_normal_halves_the_light_and_the_view) 
     EXPECT_NEAR(seen_row, row, 1.5) << figures;
     EXPECT_GT(aov[4 * brightest], 1.0) << "a rough-0.15 GGX lobe peaks well above 1: " << figures;
 }
+
+TEST_F(Light, marched_ao_beside_a_sphere_on_a_plane_is_the_analytic_occlusion) {
+    // A sphere of radius R resting on the plane y = 0 hides (R / D)^3 of a plane point's cosine-
+    // weighted sky, D the distance to its centre (the form factor of a sphere above the horizon).
+    const double radius = 0.5;
+    Pack pack = test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "ball on the ground",
+      "nodes": [
+        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, {0}, 0.0]}}}},
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
+        {{"id": "ground", "type": "prim.plane"}},
+        {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
+        {{"id": "sky", "type": "light.marched_ao", "inputs": {{"radius": 30.0, "rays": 64, "start": 0.002, "steps": 64}}}}
+      ],
+      "outputs": {{"distance": "both.distance", "ao": "sky.ao"}},
+      "scene": {{"camera": {{"position": [1.4, 2.4, 1.6], "target": [0.7, 0.0, 0.0], "fov_deg": {1}}},
+                "bounds": {{"radius": 80}}}}
+    }})", radius, kFovDeg));
+    RenderedFrame f = render(pack);
+    std::size_t position = 0, normal = 0;
+    for (std::size_t i = 0; i < aov_images().size(); ++i) {
+        if (std::string(aov_images()[i].name) == "position") position = i;
+        if (std::string(aov_images()[i].name) == "normal") normal = i;
+    }
+    std::vector<float> world(f.aovs_left[position].size() / 4);
+    std::memcpy(world.data(), f.aovs_left[position].data(), f.aovs_left[position].size());
+    const auto& normals = f.aovs_left[normal];
+    double worst = 0.0, worst_d = 0.0;
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < kSize * kSize; ++i) {
+        const double x = world[4 * i], y = world[4 * i + 1], z = world[4 * i + 2];
+        const double d = std::hypot(x, z);
+        if (std::abs(y) > 1e-3 || d < 0.7 * radius || d > 3.0 * radius) continue;
+        Imath::half ao;
+        std::memcpy(&ao, normals.data() + (4 * i + 3) * sizeof ao, sizeof ao);
+        const double expected = 1.0 - std::pow(radius / std::hypot(d, radius), 3.0);
+        if (std::abs(ao - expected) > worst) worst = std::abs(ao - expected), worst_d = d;
+        ++checked;
+    }
+    std::string figures = fmt::format("{} plane pixels 0.7 to 3 radii from the contact: AO at most {:.3f} from 1 - (R/D)^3 "
+                                      "(at {:.2f} radii)", checked, worst, worst_d / radius);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_GT(checked, 500u) << figures;
+    EXPECT_LE(worst, 0.05) << figures;
+}
