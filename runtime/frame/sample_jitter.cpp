@@ -36,6 +36,12 @@ std::vector<glm::dvec2> lens_pattern(std::uint32_t n) {
     return out;
 }
 
+std::vector<double> shutter_pattern(std::uint32_t n) {
+    std::vector<double> out;
+    for (std::uint32_t k = 0; k < n; ++k) out.push_back(radical_inverse(k, 11));
+    return out;
+}
+
 std::uint32_t taa_phases(double upscale) {
     const auto side = static_cast<std::uint32_t>(std::lround(4.0 * std::max(1.0, upscale)));
     return side * side;

@@ -23,6 +23,10 @@ inline constexpr std::uint32_t kRefinedFrames = 16;
 // mapped to the disc by Shirley and Chiu's concentric map, which keeps them evenly spread.
 std::vector<glm::dvec2> lens_pattern(std::uint32_t n);
 
+// When n samples look within an open shutter, in [0, 1): the radical inverse in base 11, another
+// base again, so a sample's moment follows neither its place in the pixel nor on the lens.
+std::vector<double> shutter_pattern(std::uint32_t n);
+
 // The offsets temporal anti-aliasing cycles through, upsampling by `upscale` (1: none): a (4u)^2
 // grid over a marched pixel, so that each output pixel gets a 4x4 grid of samples, 16 as without
 // upsampling (36 offsets at 1.5, 64 at 2).

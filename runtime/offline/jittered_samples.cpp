@@ -23,16 +23,27 @@ void add_stats(FrameStats& sum, const FrameStats& s) {
 RenderedFrame render_samples(HeadlessRenderer& renderer, const HeadPose& head, double time, std::uint32_t frame_index,
                              std::uint32_t samples) {
     if (samples <= 1) return renderer.render(head, time, frame_index);
+    return render_samples(renderer, [&](double) { return SampleMoment{head, time}; }, frame_index, samples);
+}
+
+RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<SampleMoment(double)>& moment,
+                             std::uint32_t frame_index, std::uint32_t samples) {
+    if (samples <= 1) {
+        const SampleMoment m = moment(0.0);
+        return renderer.render(m.head, m.time, frame_index);
+    }
     if (renderer.graph().taa) throw std::invalid_argument("jittered samples of a frame with temporal anti-aliasing");
     RenderedFrame first;
     SampleAccumulator left, right;
     std::vector<float> beauty_left, beauty_right;
     const std::vector<glm::dvec2> pattern = sample_pattern(samples);
     const std::vector<glm::dvec2> lens = lens_pattern(samples);
+    const std::vector<double> shutter = shutter_pattern(samples);
     for (std::uint32_t k = 0; k < samples; ++k) {
         renderer.set_jitter(pattern[k]);
         if (renderer.aperture() > 0.0) renderer.set_lens(lens[k] * (0.5 * renderer.aperture()));
-        RenderedFrame r = renderer.render(head, time, frame_index);
+        const SampleMoment m = moment(shutter[k]);
+        RenderedFrame r = renderer.render(m.head, m.time, frame_index);
         left.add(r.left);
         if (!r.right.pixels.empty()) right.add(r.right);
         if (!r.aovs_left.empty()) add_beauty(beauty_left, r.aovs_left);

@@ -4,6 +4,7 @@
 // in linear light by a SampleAccumulator. Every sample hits by the same output pixel, so the mean
 // is the same picture as --supersample of as many samples, in the memory of one frame.
 #include <cstdint>
+#include <functional>
 
 #include "frame/headless_renderer.h"
 
@@ -18,5 +19,17 @@ inline constexpr std::uint32_t kMaxSamples = 4096;
 // The renderer's jitter is none again afterwards.
 RenderedFrame render_samples(HeadlessRenderer& renderer, const HeadPose& head, double time, std::uint32_t frame_index,
                              std::uint32_t samples);
+
+// Where and when a sample looks from.
+struct SampleMoment {
+    HeadPose head;
+    double time = 0.0;
+};
+
+// The same with motion blur: sample k looks from `moment(u)`, u its place in the open shutter in
+// [0, 1) (shutter_pattern); `moment` also sets whatever else moves with it (world scale, keyed
+// parameters) on the renderer.
+RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<SampleMoment(double)>& moment,
+                             std::uint32_t frame_index, std::uint32_t samples);
 
 }  // namespace fg

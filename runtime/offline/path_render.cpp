@@ -65,6 +65,7 @@ std::string settings_fingerprint(const PathRenderSettings& s) {
     if (s.taa) sampling += " taa";
     if (s.taa_upscale > 1.0) sampling += fmt::format(" upscale{}", s.taa_upscale);
     if (s.aperture > 0.0) sampling += fmt::format(" lens{}@{}", s.aperture, s.focus);
+    if (s.shutter > 0.0) sampling += fmt::format(" shutter{}", s.shutter);
     return fmt::format("{} {} {}x{} ss{}{} levels{} ipd{} knobs[{}] {}", projection_name(s.projection),
                        stereo_mode_name(s.stereo), s.width, s.height, s.supersample, sampling, s.cone_levels, s.ipd_m,
                        knobs, format);
@@ -85,6 +86,8 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
         throw std::runtime_error("--taa-upscale needs --taa and --format png (the passes of an EXR are the marched size)");
     if (settings_.aperture > 0.0 && (settings_.samples < 2 || settings_.projection != Projection::Perspective))
         throw std::runtime_error("--aperture blurs by averaging --samples N through the lens, in perspective frames");
+    if (settings_.shutter > 0.0 && settings_.samples < 2)
+        throw std::runtime_error("--shutter blurs by averaging --samples N over the open shutter");
     if (settings_.taa && settings_.samples > 1) throw std::runtime_error("--taa and --samples both jitter the rays: choose one");
     StereoSettings stereo;
     stereo.ipd_m = settings_.ipd_m;
@@ -93,16 +96,28 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
     if (!check_path_params(path_, pack.manifest, diag)) throw std::runtime_error(diag.format("camera path"));
 }
 
-OfflineFrame PathRenderer::render_frame(int frame) {
-    CameraSample s = path_.sample(frame);
+void PathRenderer::move_to(const CameraSample& s) {
     renderer_->set_world_scale(s.world_scale);
     // Keyed parameters are uniforms: set before every frame, so each frame depends on its number only.
     FrameExecutor& executor = renderer_->executor();
     for (const auto& [name, value] : s.params)
         if (const ManifestParam* p = executor.manifest().find_param(name)) executor.set_param(name, keyed_param_value(*p, value));
+}
+
+OfflineFrame PathRenderer::render_frame(int frame) {
+    CameraSample s = path_.sample(frame);
+    move_to(s);
     if (settings_.aperture > 0.0)
         focus_depth_of_field(*renderer_, settings_.aperture, settings_.focus, s.head, s.time, static_cast<std::uint32_t>(frame));
-    RenderedFrame r = render_samples(*renderer_, s.head, s.time, static_cast<std::uint32_t>(frame), settings_.samples);
+    // Motion blur: each sample looks from the path's pose at its moment of the open shutter.
+    const double open = path_.keys().front().time + frame / path_.fps();
+    auto moment = [&](double u) {
+        if (settings_.shutter <= 0.0) return SampleMoment{s.head, s.time};
+        CameraSample m = path_.at(open + u * settings_.shutter / path_.fps());
+        move_to(m);
+        return SampleMoment{m.head, m.time};
+    };
+    RenderedFrame r = render_samples(*renderer_, moment, static_cast<std::uint32_t>(frame), settings_.samples);
     std::uint64_t evaluations = 0;
     for (const auto& [_, n] : r.stats.evaluations) evaluations += n;
     double samples = (is_mono(settings_.projection) ? 1.0 : 2.0) * settings_.width * settings_.height *

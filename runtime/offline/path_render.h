@@ -26,6 +26,7 @@ struct PathRenderSettings {
     double taa_upscale = 1.0;                 // with taa: temporal upsampling (marched at 1/this per axis)
     double aperture = 0.0;                    // depth of field over the samples: the lens's diameter
     double focus = 0.0;                       // ... focused this far ahead (0: at the view's centre, per frame)
+    double shutter = 0.0;                     // motion blur over the samples: the open share of a frame
     std::uint32_t cone_levels = 5;
     double ipd_m = 0.064;
     std::map<std::string, double> knobs;
@@ -66,6 +67,9 @@ public:
     const PathRenderSettings& settings() const { return settings_; }
 
 private:
+    // The renderer's world scale and keyed parameters at a point of the path.
+    void move_to(const CameraSample& s);
+
     CameraPath path_;
     PathRenderSettings settings_;
     std::unique_ptr<HeadlessRenderer> renderer_;

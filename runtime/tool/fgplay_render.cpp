@@ -57,6 +57,10 @@ int render(const RenderOptions& o) {
             return 2;
         }
         set_taa_upscale(frame, o.taa_upscale);
+        if (o.shutter > 0.0) {
+            fmt::print(stderr, "fgplay: --shutter blurs the motion along a camera path: add --path P\n");
+            return 2;
+        }
         if (o.aperture > 0.0 && (o.samples < 2 || o.taa)) {
             fmt::print(stderr, "fgplay: --aperture blurs by averaging samples through the lens: add --samples N (64 "
                                "for a smooth blur), without --taa\n");

@@ -32,6 +32,7 @@ struct RenderOptions {
     double taa_upscale = 1.0;        // temporal upsampling: marched at 1/this of the size per axis
     double aperture = 0.0;           // depth of field: the lens's diameter in scene units (0: pinhole)
     double focus = 0.0;              // ... focused this far ahead (0: at what the view's centre sees)
+    double shutter = 0.0;            // with --path: motion blur, the open share of each frame's interval
     OutputFormat format = OutputFormat::Png;
     ExrCompression compression = ExrCompression::Zip;
     bool resume = false;

@@ -63,6 +63,7 @@ int render_path(const RenderOptions& o) {
     s.taa_upscale = o.taa_upscale;
     s.aperture = o.aperture;
     s.focus = o.focus;
+    s.shutter = o.shutter;
     s.cone_levels = o.cone_levels;
     s.ipd_m = o.ipd_m;
     s.knobs = o.knobs;

@@ -50,6 +50,11 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
                        "with --aperture: the distance in scene units that stays sharp (default: what the view's centre "
                        "sees, each frame)")
         ->check(CLI::PositiveNumber);
+    render->add_option("--shutter", r.shutter,
+                       "with --path and --samples: motion blur, the shutter open for this share of each frame's "
+                       "interval (0.5 is a film camera's 180 degrees); each sample looks from its moment of the path")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     render->add_option("--format", c.format,
                        "with --path: png | png16 (16-bit, from the HDR beauty) | exr (OpenEXR with the beauty and "
                        "passes for compositing)")

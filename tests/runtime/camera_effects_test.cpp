@@ -1,7 +1,8 @@
-// Depth of field (a thin lens over jittered samples, offline/depth_of_field.h) against the thin
-// lens's closed form: an edge at the focus distance stays sharp (inside one pixel), and one at
-// twice the focus distance blurs by the circle of confusion, aperture * (1/focus - 1/distance)
-// across, within 10 %.
+// The camera's effects over jittered samples against closed forms. Depth of field (a thin lens,
+// offline/depth_of_field.h): an edge at the focus distance stays sharp (inside one pixel), and one
+// at twice the focus distance blurs by the circle of confusion, aperture * (1/focus - 1/distance)
+// across, within 10 %. Motion blur (a camera path's shutter): an edge blurs by the camera's motion
+// while the shutter is open, within 10 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "offline/depth_of_field.h"
 #include "offline/linear_light.h"
 #include "offline/jittered_samples.h"
+#include "offline/path_render.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -93,6 +95,7 @@ Rgba8Image blurred(double distance) {
 }
 
 class DepthOfField : public RuntimeTest {};
+class MotionBlur : public RuntimeTest {};
 
 }  // namespace
 
@@ -123,4 +126,40 @@ TEST_F(DepthOfField, the_focus_defaults_to_what_the_view_centre_sees) {
     EXPECT_NEAR(focus_depth_of_field(r, 0.1, 0.0, r.scene_camera(), 0.0, 0), 3.0, 0.01);
     HeadPose away = look_at({0, 0, 0}, {-1, 0, 0});
     EXPECT_THROW(focus_depth_of_field(r, 0.1, 0.0, away, 0.0, 0), std::runtime_error);
+}
+
+TEST_F(MotionBlur, a_camera_moving_while_the_shutter_is_open_blurs_an_edge_by_its_motion) {
+    // Sideways at 3 units a second, 30 frames a second, the shutter open half of each: the camera
+    // moves 0.05 while it looks, which the wall 2 ahead turns into a box blur that many pixels long.
+    const double speed = 3.0, fps = 30.0, shutter = 0.5, distance = 2.0;
+    Pack pack = wall_at(distance);
+    Diagnostics diag;
+    auto path = CameraPath::parse(nlohmann::json::parse(R"({
+      "format": "fractograph-camera-path", "version": 1, "fps": 30, "interpolation": "linear",
+      "keyframes": [{"time": 0.0, "position": [-1.0, 0.0, 0.0], "target": [-1.0, 0.0, -1.0]},
+                    {"time": 1.0, "position": [2.0, 0.0, 0.0], "target": [2.0, 0.0, -1.0]}]
+    })"), 1.0, diag);
+    ASSERT_TRUE(path) << diag.format();
+    PathRenderSettings s;
+    s.projection = Projection::Perspective;
+    s.stereo = StereoMode::Naive;
+    s.width = s.height = kSize;
+    s.ipd_m = 0.0;
+    s.samples = 64;
+    s.shutter = shutter;
+    PathRenderer renderer(test::shared_context(), pack, *path, s);
+    // Frame 10 opens with the camera at x = 0, the edge at the view's centre.
+    Rgba8Image picture = renderer.render(10);
+    Rgba8Image left{kSize, kSize, std::vector<std::uint8_t>(kSize * kSize * 4)};
+    for (std::uint32_t y = 0; y < kSize; ++y)
+        std::copy_n(picture.pixels.begin() + 4 * (y * picture.width), 4 * kSize, left.pixels.begin() + 4 * (y * kSize));
+    const double pixel_tan = 2.0 * std::tan(glm::radians(kFovDeg / 2.0)) / kSize;
+    const double length = speed * shutter / fps / distance / pixel_tan;   // the blur in pixels
+    const double expected = 0.8 * length;                                  // 10-90 % of a linear ramp
+    const double measured = edge_width(left);
+    std::string figures = fmt::format("edge 10-90 % {:.2f} px under a {:.2f} px motion blur (a ramp's {:.2f})", measured,
+                                      length, expected);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_NEAR(measured, expected, 0.1 * expected) << figures;
 }
