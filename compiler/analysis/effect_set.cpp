@@ -27,6 +27,8 @@ EffectSet find_effects(const IrGraph& ir) {
     if (ir.outputs.count("emission")) e.add(Effect::Emission);
     if (ir.outputs.count("shadow")) e.add(Effect::Shadow);
     if (ir.outputs.count("specular")) e.add(Effect::Specular);
+    // The bounce leaves along the shade pass's own normal.
+    if (ir.outputs.count("reflection")) e.add(Effect::Reflection), e.add(Effect::Normals);
 
     const auto& s = ir.scene;
     if (s.fog) e.add(Effect::Fog);

@@ -26,6 +26,7 @@ enum class Effect : std::uint32_t {
     Foveation,           // half-resolution periphery, blended (scene asks for it)
     Shadow,              // the light's visibility, marched towards it (light.soft_shadow)
     Specular,            // specular highlights (light.specular)
+    Reflection,          // one mirror bounce (light.reflection): the shade pass marches the reflected ray
     Count
 };
 

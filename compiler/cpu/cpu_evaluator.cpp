@@ -181,6 +181,7 @@ CpuSurface CpuEvaluator::surface(const glm::dvec3& p, const CpuShadeInputs& shad
     if (auto v = get("emission")) s.emission = v->v3();
     if (auto v = get("shadow")) s.shadow = v->f();
     if (auto v = get("specular")) s.specular = v->v3();
+    if (auto v = get("reflection")) s.reflection = v->v3();
     return s;
 }
 

@@ -26,6 +26,7 @@ struct CpuSurface {
     std::optional<double> diffuse, ao, sss, rim, shadow;
     glm::dvec3 emission{0.0};
     glm::dvec3 specular{0.0};
+    glm::dvec3 reflection{0.0};
 };
 
 class CpuEvaluator {

@@ -25,6 +25,7 @@ const std::vector<GraphOutputSpec>& graph_output_specs() {
         {"emission", ValueType::Vec3, false, "emitted colour, added after lighting"},
         {"shadow", ValueType::Float, false, "how much of the light reaches the point, in [0, 1] (light.soft_shadow); scales diffuse and specular"},
         {"specular", ValueType::Vec3, false, "specular reflectance towards the camera (light.specular), times the light's colour and the shadow"},
+        {"reflection", ValueType::Vec3, false, "mirror reflectance (light.reflection): the share of the scene seen in the mirror direction that the point reflects"},
     };
     return specs;
 }

@@ -17,6 +17,7 @@ void add_aov_passes(FrameGraph& g) {
         p.bind("fg_depth", "depth." + eye, Access::Read);
         if (g.effects.has(Effect::Glow)) p.bind("fg_glow", "glow." + eye, Access::Read);
         for (const AovImage& a : aov_images()) {
+            if (!aov_image_needed(a, g.effects)) continue;
             g.add_image({aov_image_name(a, eye), g.width, g.height, a.format, a.about});
             p.bind(a.binding, aov_image_name(a, eye), Access::Write);
         }

@@ -160,7 +160,7 @@ public:
     // The reuse knob, where it can hold: per-eye perspective frames of a static float scene.
     bool reuse = false;
     // The shade_history knob, where it can hold: a static float scene in perspective whose shading
-    // does not depend on the view direction (no rim, no SSS, no specular).
+    // does not depend on the view direction (no rim, SSS, specular or reflection).
     bool shade_history = false;
     bool manifest_has_tail = false;    // the pack has the tail program
     // An eye's passes dispatch the tiles that hold their pixels (the fovea's, the periphery's, the

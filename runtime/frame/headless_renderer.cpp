@@ -67,7 +67,10 @@ RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::u
     out.depth_left = floats(executor_->download("depth." + left));
     auto download_aovs = [&](const std::string& eye, std::vector<std::vector<std::byte>>& into) {
         if (!frame_.aovs) return;
-        for (const AovImage& a : aov_images()) into.push_back(executor_->download(aov_image_name(a, eye)));
+        // An image the scene has no term for is left empty (aov_image_needed).
+        for (const AovImage& a : aov_images())
+            into.push_back(graph().find_image(aov_image_name(a, eye)) ? executor_->download(aov_image_name(a, eye))
+                                                                       : std::vector<std::byte>());
     };
     download_aovs(left, out.aovs_left);
     if (!mono) {

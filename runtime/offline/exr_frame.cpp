@@ -57,6 +57,8 @@ constexpr Channel kChannels[] = {
     {"trap.Z", "trap", 2, Imf::HALF},    {"trap.W", "trap", 3, Imf::HALF},
     {"specular.R", "light", 0, Imf::HALF}, {"specular.G", "light", 1, Imf::HALF}, {"specular.B", "light", 2, Imf::HALF},
     {"shadow.Y", "light", 3, Imf::HALF},
+    {"reflection.R", "reflection", 0, Imf::HALF}, {"reflection.G", "reflection", 1, Imf::HALF},
+    {"reflection.B", "reflection", 2, Imf::HALF},
 };
 
 Imath::M44f to_imath(const ExrMatrix& rows) {
@@ -75,13 +77,26 @@ Imf::Compression imf_compression(ExrCompression c) {
     return Imf::ZIP_COMPRESSION;
 }
 
+// The AOV image a channel reads, by its index in aov_images().
+std::size_t image_of(const Channel& c) {
+    const auto images = aov_images();
+    std::size_t k = 0;
+    while (std::strcmp(images[k].name, c.image) != 0) ++k;
+    return k;
+}
+
+// A part carries a channel where it has its image: a scene without a term has no image for it
+// (aov_image_needed), and its EXR no channel.
+bool has_channel(const ExrPart& part, const Channel& c) { return !part.aovs[image_of(c)].empty(); }
+
 Imf::Header part_header(const ExrPart& part, ExrCompression compression) {
     Imf::Header h(static_cast<int>(part.width), static_cast<int>(part.height));
     h.compression() = imf_compression(compression);
     h.setName(part.view);
     h.setType(Imf::SCANLINEIMAGE);
     h.setView(part.view);
-    for (const Channel& c : kChannels) h.channels().insert(c.name, Imf::Channel(c.type));
+    for (const Channel& c : kChannels)
+        if (has_channel(part, c)) h.channels().insert(c.name, Imf::Channel(c.type));
     Imf::addWorldToCamera(h, to_imath(part.camera.world_to_camera));
     if (part.camera.world_to_ndc) Imf::addWorldToNDC(h, to_imath(*part.camera.world_to_ndc));
     if (part.panorama) Imf::addEnvmap(h, Imf::ENVMAP_LATLONG);
@@ -151,17 +166,19 @@ std::vector<std::uint8_t> encode_exr(std::span<const ExrPart> parts, ExrCompress
     std::vector<std::uint8_t> bytes;
     try {
         std::vector<Imf::Header> headers;
-        for (const ExrPart& p : parts) headers.push_back(part_header(p, compression));
+        const auto images = aov_images();
+        for (const ExrPart& p : parts) {
+            if (p.aovs.size() != images.size()) throw std::logic_error("an EXR part needs a place for every AOV image");
+            headers.push_back(part_header(p, compression));
+        }
         MemoryStream stream(bytes);
         Imf::MultiPartOutputFile file(stream, headers.data(), static_cast<int>(headers.size()));
         for (std::size_t i = 0; i < parts.size(); ++i) {
             const ExrPart& p = parts[i];
-            const auto images = aov_images();
-            if (p.aovs.size() != images.size()) throw std::logic_error("an EXR part needs every AOV image");
             Imf::FrameBuffer fb;
             for (const Channel& c : kChannels) {
-                std::size_t k = 0;
-                while (std::strcmp(images[k].name, c.image) != 0) ++k;
+                if (!has_channel(p, c)) continue;
+                const std::size_t k = image_of(c);
                 const std::size_t pixel = bytes_per_pixel(images[k].format);
                 const std::size_t component = pixel / 4;
                 if (p.aovs[k].size() < pixel * p.width * p.height) throw std::logic_error("an AOV image is too small");

@@ -55,6 +55,7 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
     const std::size_t in_width = static_cast<std::size_t>(width) * factor;
     std::vector<std::vector<std::byte>> out(aovs.size());
     for (std::size_t k = 0; k < aovs.size(); ++k) {
+        if (aovs[k].empty()) continue;   // a term the scene does not have
         const std::size_t pixel = bytes_per_pixel(images[k].format);
         out[k].resize(pixel * width * height);
         for (std::uint32_t y = 0; y < height; ++y)

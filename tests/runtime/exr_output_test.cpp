@@ -323,7 +323,7 @@ TEST_F(ExrOutput, an_8k_ods_frame_is_written_within_a_bounded_memory) {
     PathRunResult r = run_path(renderer, {dir_.path().string(), {0, 1}, "8k", false, false});
     ASSERT_EQ(r.rendered, 1);
     // Memory: the frame graph's images (lavapipe's device memory is the process's), one host copy of
-    // the AOV images (48 bytes a pixel) and of the picture (4), the largest download's staging
+    // the AOV images (48 bytes a pixel: the room has no light terms) and of the picture (4), the largest download's staging
     // buffer (an eye's positions, 16), the file, and a gigabyte for the process itself (libraries,
     // compiler, driver); a second copy of the AOVs would not fit (measured before the check below
     // reads the file back).
@@ -332,7 +332,10 @@ TEST_F(ExrOutput, an_8k_ods_frame_is_written_within_a_bounded_memory) {
     const std::uint64_t peak = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
     const std::uint64_t pixels = 2ull * 8192 * 4096;
     const std::uint64_t file = std::filesystem::file_size(frame_image_path(dir_.path().string(), 0, OutputFormat::Exr));
-    const std::uint64_t bound = renderer.graph().memory_bytes() + pixels * (48 + 4) + pixels / 2 * 16 + file + (1ull << 30);
+    std::uint64_t aov_bytes = 0;
+    for (const AovImage& a : aov_images())
+        if (aov_image_needed(a, renderer.graph().effects)) aov_bytes += bytes_per_pixel(a.format);
+    const std::uint64_t bound = renderer.graph().memory_bytes() + pixels * (aov_bytes + 4) + pixels / 2 * 16 + file + (1ull << 30);
     RecordProperty("peak_rss_mib", static_cast<int>(peak >> 20));
     RecordProperty("write_seconds", fmt::format("{:.1f}", r.write_seconds));
     EXPECT_LE(peak, bound) << "peak resident memory " << (peak >> 20) << " MiB, bound " << (bound >> 20) << " MiB";
@@ -344,4 +347,31 @@ TEST_F(ExrOutput, an_8k_ods_frame_is_written_within_a_bounded_memory) {
     EXPECT_TRUE(Imf::hasEnvmap(parts[0].header));
     // Straight down from the bottom row: the floor, 1 m below the eye (prim.plane, offset 1).
     EXPECT_NEAR(parts[0].at("Z", 4096, 4095), 1.0, 0.01);
+}
+
+TEST_F(ExrOutput, a_lit_scene_writes_its_light_terms_as_passes_and_a_scene_without_them_none) {
+    Pack lit = test::compile_pack(test::read_source_file("graphs/examples/lit_mandelbulb.json"));
+    auto channels_of = [&](const Pack& pack, const std::string& sub) {
+        PathRenderer renderer(test::shared_context(), pack, *path_, settings_);
+        run_path(renderer, {(dir_ / sub).string(), {0, 1}, "light terms", false, false});
+        return read_exr(frame_image_path((dir_ / sub).string(), 0, OutputFormat::Exr)).at(0);
+    };
+    ExrPartPixels with = channels_of(lit, "lit"), without = channels_of(pack_, "plain");
+    for (const char* c : {"shadow.Y", "specular.R", "specular.G", "specular.B"}) {
+        EXPECT_TRUE(with.channels.count(c)) << c;
+        EXPECT_FALSE(without.channels.count(c)) << c;
+    }
+    EXPECT_FALSE(with.channels.count("reflection.R")) << "the lit bulb does not reflect";
+    // The bulb shadows itself: some of its points lie mostly in shadow, some in full light.
+    std::size_t dark = 0, lit_points = 0;   // below a half, above 0.9
+    for (std::size_t i = 0; i < with.channels.at("shadow.Y").size(); ++i) {
+        if (!std::isfinite(with.channels.at("Z")[i])) continue;
+        const float s = with.channels.at("shadow.Y")[i];
+        EXPECT_TRUE(s >= 0.0f && s <= 1.0f) << s;
+        dark += s < 0.5f;
+        lit_points += s > 0.9f;
+    }
+    std::printf("shadow: %zu points below a half, %zu above 0.9\n", dark, lit_points);
+    EXPECT_GT(dark, 50u);
+    EXPECT_GT(lit_points, 50u);
 }

@@ -202,3 +202,58 @@ TEST_F(Light, marched_ao_beside_a_sphere_on_a_plane_is_the_analytic_occlusion) {
     EXPECT_GT(checked, 500u) << figures;
     EXPECT_LE(worst, 0.05) << figures;
 }
+
+TEST_F(Light, a_glass_sphere_reflects_the_background_by_fresnels_law) {
+    // A black sphere of glass (ior 1.5) before a flat background, no light: each pixel is the
+    // background times the Fresnel reflectance at its angle (a convex body's mirror rays all escape).
+    const glm::dvec3 camera(0.0, 0.0, 4.0), background(0.2, 0.5, 0.8);
+    const double ior = 1.5;
+    Pack pack = test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "glass ball",
+      "nodes": [
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"radius": 1.0}}}},
+        {{"id": "mirror", "type": "light.reflection", "inputs": {{"ior": {0}}}}}
+      ],
+      "outputs": {{"distance": "ball.distance", "reflection": "mirror.reflection"}},
+      "scene": {{"camera": {{"position": [0, 0, 4], "target": [0, 0, 0], "fov_deg": {1}}},
+                "light": {{"color": [0, 0, 0], "ambient": [0, 0, 0]}}, "albedo": [0, 0, 0],
+                "background": [{2}, {3}, {4}]}}
+    }})", ior, kFovDeg, background.x, background.y, background.z));
+    RenderedFrame f = render(pack);
+    std::size_t beauty = 0, position = 0, normal = 0;
+    for (std::size_t i = 0; i < aov_images().size(); ++i) {
+        const std::string name = aov_images()[i].name;
+        if (name == "beauty") beauty = i;
+        if (name == "position") position = i;
+        if (name == "normal") normal = i;
+    }
+    std::vector<float> world(f.aovs_left[position].size() / 4);
+    std::memcpy(world.data(), f.aovs_left[position].data(), f.aovs_left[position].size());
+    auto half_at = [](const std::vector<std::byte>& bytes, std::size_t i) {
+        Imath::half h;
+        std::memcpy(&h, bytes.data() + i * sizeof h, sizeof h);
+        return static_cast<double>(h);
+    };
+    double worst = 0.0, worst_cos = 0.0;
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < kSize * kSize; ++i) {
+        if (!std::isfinite(world[4 * i + 3])) continue;   // a miss
+        const glm::dvec3 p(world[4 * i], world[4 * i + 1], world[4 * i + 2]);
+        const glm::dvec3 n(half_at(f.aovs_left[normal], 4 * i), half_at(f.aovs_left[normal], 4 * i + 1),
+                           half_at(f.aovs_left[normal], 4 * i + 2));
+        const double cos_i = glm::dot(glm::normalize(n), glm::normalize(camera - p));
+        if (cos_i < 0.2) continue;   // the rim, where a pixel spans a wide range of angles
+        const double cos_t = std::sqrt(1.0 - (1.0 - cos_i * cos_i) / (ior * ior));
+        const double rs = (cos_i - ior * cos_t) / (cos_i + ior * cos_t), rp = (cos_t - ior * cos_i) / (cos_t + ior * cos_i);
+        const double expected = 0.5 * (rs * rs + rp * rp) * background.z;
+        const double error = std::abs(half_at(f.aovs_left[beauty], 4 * i + 2) - expected) / expected;
+        if (error > worst) worst = error, worst_cos = cos_i;
+        ++checked;
+    }
+    std::string figures = fmt::format("{} pixels of the glass ball: at most {:.2f} % from Fresnel's reflectance times the "
+                                      "background (at cos {:.2f})", checked, 100.0 * worst, worst_cos);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_GT(checked, 2000u) << figures;
+    EXPECT_LE(worst, 0.02) << figures;
+}

@@ -5,7 +5,7 @@
 //! include-after-scene: shading.glsl
 // The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
 // beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse
-// factor, the orbit trap, the specular reflectance and the shadow. Runs only when an offline render asks for them; it shades each hit
+// factor, the orbit trap, the specular reflectance, the shadow and the mirror bounce's colour. Runs only when an offline render asks for them; it shades each hit
 // once more with the shade pass's own functions, so the beauty is the picture's colour.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -18,7 +18,13 @@ layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D fg_position;   /
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_normal;     // xyz unit normal, w AO
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D fg_albedo;     // rgb albedo, w diffuse factor
 layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D fg_trap;       // the fractal's orbit trap
+#if defined(FG_HAS_SHADOW) || defined(FG_HAS_SPECULAR)
+#define FG_AOV_LIGHT 1
 layout(set = 0, binding = 10, rgba16f) uniform writeonly image2D fg_light;     // rgb specular, w shadow
+#endif
+#ifdef FG_HAS_REFLECTION
+layout(set = 0, binding = 11, rgba16f) uniform writeonly image2D fg_reflection;   // rgb the mirror bounce's colour
+#endif
 layout(push_constant) uniform FgAovPush { AovPush pc; };
 
 void main()
@@ -42,16 +48,21 @@ void main()
         imageStore(fg_normal, pixel, vec4(0.0));
         imageStore(fg_albedo, pixel, vec4(0.0));
         imageStore(fg_trap, pixel, vec4(0.0));
+#ifdef FG_AOV_LIGHT
         imageStore(fg_light, pixel, vec4(0.0));
+#endif
+#ifdef FG_HAS_REFLECTION
+        imageStore(fg_reflection, pixel, vec4(0.0));
+#endif
         return;
     }
     vec3 p = ro + rd * t;
     // The normal is written even where the picture needs none; the shading sees what shade saw.
     vec3 n = fg_surface_normal(p, t);
 #ifdef FG_HAS_NORMALS
-    FgShading s = fg_shade_hit(p, rd, n);
+    FgShading s = fg_shade_hit(p, rd, n, t);
 #else
-    FgShading s = fg_shade_hit(p, rd, vec3(0.0, 1.0, 0.0));
+    FgShading s = fg_shade_hit(p, rd, vec3(0.0, 1.0, 0.0), t);
 #endif
     vec3 beauty = fg_post_effects(s.color, pixel, size, t, closest);
     imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
@@ -67,5 +78,10 @@ void main()
     imageStore(fg_normal, pixel, vec4(n, s.ao));
     imageStore(fg_albedo, pixel, vec4(s.albedo, s.diffuse));
     imageStore(fg_trap, pixel, fg_scene_trap(p));
+#ifdef FG_AOV_LIGHT
     imageStore(fg_light, pixel, vec4(s.specular, s.shadow));
+#endif
+#ifdef FG_HAS_REFLECTION
+    imageStore(fg_reflection, pixel, vec4(s.reflected, 0.0));
+#endif
 }

@@ -137,7 +137,7 @@ void main()
             color = fg_kept_color(kept, p, rd, n);
             kept.age += 1.0;
         } else {
-            FgShading shading = fg_shade_hit(p, rd, n);
+            FgShading shading = fg_shade_hit(p, rd, n, t);
             color = shading.color;
             if (FG_SHADE_REUSE > 0.0 || FG_SHADE_HISTORY > 0.0) kept = fg_keep_shading(shading);
         }

@@ -50,11 +50,13 @@ struct FgShading {
     float ao;
     float shadow;    // how much of the light reaches the point
     vec3 specular;   // the specular reflectance towards the camera
+    vec3 reflected;  // the colour the mirror bounce adds
     FgSurface surface;   // the graph's outputs it came from
 };
 
-// Shades the hit p seen along rd with normal n (the graph's surface outputs, fake lighting, emission).
-FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n)
+// Shades the hit p seen along rd with normal n by its direct terms: the graph's surface outputs,
+// the light, fake lighting, emission; no mirror bounce.
+FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n)
 {
     FgSurface s = fg_scene_surface(p, -rd, n);
 #ifdef FG_OUT_DIFFUSE
@@ -92,5 +94,38 @@ FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n)
 #ifdef FG_HAS_EMISSION
     color += s.emission;
 #endif
-    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, s);
+    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, vec3(0.0), s);
+}
+
+#ifdef FG_HAS_REFLECTION
+// The scene in the mirror direction from the hit p, t along rd: one bounce, its hit shaded by its
+// direct terms (not reflected again), a miss by the background. It hits by the same rule as the
+// eye's rays, the pixel's cone grown over the whole path.
+vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
+{
+    vec3 dir = reflect(rd, n);
+    float footprint = FG_EPSILON * fg_detail_tan();
+    vec3 origin = p + n * (2.0 * footprint * t + 1e-6 * fg_frame.world_scale);
+    vec2 range = fg_bounds_interval(origin, dir, 0.0);
+    float along = max(range.x, 0.0);
+    for (int i = 0; i < FG_MAX_STEPS && along <= range.y; i++) {
+        vec3 q = origin + dir * along;
+        float d = fg_scene_distance(q) * FG_STEP_SCALE;
+        if (d < footprint * (t + along)) return fg_shade_direct(q, dir, fg_surface_normal(q, t + along)).color;
+        along += d;
+    }
+    return fg_background(dir);
+}
+#endif
+
+// Shades the hit p, t along rd, with normal n: its direct terms, and where the graph reflects, the
+// mirror bounce weighted by its reflectance.
+FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n, float t)
+{
+    FgShading s = fg_shade_direct(p, rd, n);
+#ifdef FG_HAS_REFLECTION
+    s.reflected = s.surface.reflection * fg_reflected_light(p, rd, n, t);
+    s.color += s.reflected;
+#endif
+    return s;
 }
