@@ -31,15 +31,13 @@ void add_view(FrameGraph& g, int view) {
     g.add_image({depth, w, h, ImageFormat::R32F, "hit distance or miss"});
     bool glow = g.effects.has(Effect::Glow);
     if (glow) g.add_image({"glow." + name, w, h, ImageFormat::R32F, "closest approach along the ray"});
-    // The tail queue: big enough for every pixel when the tail pass runs, a stub otherwise (the
-    // program declares it either way).
+    // The tail queue: every pixel's room when the tail pass runs.
     std::string queue = "tail." + name;
     bool tail = g.tail_after > 0 && g.manifest_has_tail;
-    g.add_buffer({queue, tail ? 16 + 16ull * w * h : 32, {0, 1, 1, 0},
-                  tail ? "pixels whose march continues in the tail pass" : "(tail pass off)", {}});
+    if (tail) g.add_buffer({queue, 16 + 16ull * w * h, {0, 1, 1, 0}, "pixels whose march continues in the tail pass", {}});
     // Persistent lanes' work queues at full resolution: one word per dispatch (stride 1 and 2).
     std::string lanes = "lanes." + name;
-    g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each full-resolution dispatch" : "(persistent lanes off)", {}});
+    if (g.persistent_lanes) g.add_buffer({lanes, 8, {0, 0}, "next pixel of each full-resolution dispatch", {}});
     std::string rays = add_rays_buffer(g, view, w, h);
     // Cross-frame reuse reads this eye's levels of the frame before; otherwise the program's binding
     // gets the levels it writes anyway.
@@ -56,10 +54,13 @@ void add_view(FrameGraph& g, int view) {
         // Every level binds what the program declares; only level 0 writes the depth, glow and queue.
         p.bind("fg_levels", atlas, k + 1 < levels ? Access::ReadWrite : Access::Write);
         p.bind("fg_depth", depth, Access::Write);
-        p.bind("FgTail", queue, Access::ReadWrite);
-        p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+        if (tail) p.bind("FgTail", queue, Access::ReadWrite);
+        else p.leave_unused("FgTail");
+        if (g.persistent_lanes) p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+        else p.leave_unused("FgLaneQueue");
         p.bind("fg_previous_levels", previous_levels, Access::Read);
-        p.bind("FgRays", rays, Access::Write);
+        if (g.persistent_lanes) p.bind("FgRays", rays, Access::Write);
+        else p.leave_unused("FgRays");
         if (glow) p.bind("fg_glow", "glow." + name, Access::Write);
         p.persistent_lanes = k == 0 && g.persistent_lanes;
         p.counter_slot = g.counter_slot(fmt::format("march.L{}", k));

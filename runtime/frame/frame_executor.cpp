@@ -57,6 +57,19 @@ VkFormat vk_format(ImageFormat f) {
 }
 
 // Standard resources every pass may bind, by the block names the templates declare.
+// The executor's stand-in for a binding a pass leaves unused: a 1x1 image of the shader's declared
+// format, or a small buffer, of that pass and binding alone (passes of one batch run without
+// barriers between them, so they share no stand-in). Not the frame graph's: it declares nothing.
+std::string stand_in_name(const FramePass& pass, const ManifestBinding& b) { return "stand_in." + pass.label + "." + b.name; }
+
+ImageFormat image_format_named(const std::string& name) {
+    for (ImageFormat f : {ImageFormat::R32F, ImageFormat::RG32F, ImageFormat::RGBA16F, ImageFormat::RGBA32F,
+                          ImageFormat::RGBA8, ImageFormat::RGBA32UI})
+        if (name == image_format_name(f)) return f;
+    throw std::runtime_error(fmt::format("a storage image of format '{}', which this runtime does not make: recompile "
+                                         "the pack with this fgc", name));
+}
+
 const char* standard_resource(const std::string& binding) {
     if (binding == "FgFrame") return "frame";
     if (binding == "FgScene") return "scene";
@@ -217,6 +230,18 @@ void FrameExecutor::make_resources() {
     for (const auto& b : graph_.buffers())
         buffers_[b.name] = std::make_unique<vk::Buffer>(
             ctx_, b.size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+    // The stand-ins for bindings passes leave unused (FramePass::leave_unused); their code is
+    // compiled out, so nothing touches them.
+    for (std::size_t i = 0; i < graph_.passes().size(); ++i)
+        for (const auto& b : pass_programs_[i]->manifest->bindings) {
+            const auto& unused = graph_.passes()[i].unused;
+            if (std::find(unused.begin(), unused.end(), b.name) == unused.end()) continue;
+            const std::string name = stand_in_name(graph_.passes()[i], b);
+            if (b.kind == "storage_image" && !images_.count(name))
+                images_[name].push_back(std::make_unique<vk::StorageImage>(ctx_, vk_format(image_format_named(b.format)), VkExtent2D{1, 1}));
+            if (b.kind == "storage_buffer" && !buffers_.count(name))
+                buffers_[name] = std::make_unique<vk::Buffer>(ctx_, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+        }
     no_tiles_ = std::make_unique<vk::Buffer>(ctx_, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     frame_ = std::make_unique<vk::Buffer>(ctx_, sizeof(GpuFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
     scene_ = std::make_unique<vk::Buffer>(ctx_, sizeof(GpuScene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::HostVisible);
@@ -269,6 +294,8 @@ void FrameExecutor::make_descriptor_sets() {
                 std::string resource;
                 for (const auto& [name, res] : pass.bindings)
                     if (name == b.name) resource = res;
+                const auto& unused = pass.unused;
+                if (resource.empty() && std::find(unused.begin(), unused.end(), b.name) != unused.end()) resource = stand_in_name(pass, b);
                 if (resource.empty()) {
                     const char* std_res = standard_resource(b.name);
                     if (!std_res)

@@ -78,6 +78,11 @@ struct FramePass {
 
     // Binds `resource` to the shader's `binding` and declares the access.
     void bind(const std::string& binding, const std::string& resource, Access access);
+    // A binding the shader declares that this pass never touches, its feature being off (the knob's
+    // specialization constant compiles its code out): the graph declares nothing for it, and the
+    // executor binds a shared stand-in of the binding's kind.
+    void leave_unused(const std::string& binding) { unused.push_back(binding); }
+    std::vector<std::string> unused;
     template <class Push>
     void set_push(const Push& p) {
         static_assert(std::is_trivially_copyable_v<Push>);

@@ -13,7 +13,7 @@ void add_naive_passes(FrameGraph& g) {
         bool glow = g.effects.has(Effect::Glow);
         if (glow) g.add_image({"glow." + eye, g.width, g.height, ImageFormat::R32F, "closest approach along the ray"});
         std::string lanes = "lanes." + eye;
-        g.add_buffer({lanes, 8, {0, 0}, g.persistent_lanes ? "next pixel of each dispatch" : "(persistent lanes off)", {}});
+        if (g.persistent_lanes) g.add_buffer({lanes, 8, {0, 0}, "next pixel of each dispatch", {}});
         std::string rays = add_rays_buffer(g, view, g.width, g.height);
         std::int32_t slot = g.counter_slot("march");
         g.add_pixel_pass(view, [&](int stride) {
@@ -23,8 +23,13 @@ void add_naive_passes(FrameGraph& g) {
             p.timer = "march";
             p.bind("fg_depth", "depth." + eye, Access::Write);
             if (glow) p.bind("fg_glow", "glow." + eye, Access::Write);
-            p.bind("FgLaneQueue", lanes, Access::ReadWrite);
-            p.bind("FgRays", rays, Access::Write);
+            if (g.persistent_lanes) {
+                p.bind("FgLaneQueue", lanes, Access::ReadWrite);
+                p.bind("FgRays", rays, Access::Write);
+            } else {
+                p.leave_unused("FgLaneQueue");
+                p.leave_unused("FgRays");
+            }
             p.persistent_lanes = g.persistent_lanes;
             p.counter_slot = slot;
             p.set_push(NaivePush{view, slot, stride});

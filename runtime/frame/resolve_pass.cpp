@@ -6,8 +6,7 @@ namespace fg {
 
 std::string add_rays_buffer(FrameGraph& g, int view, std::uint32_t width, std::uint32_t height) {
     std::string rays = std::string("rays.") + view_name(view);
-    g.add_buffer({rays, g.persistent_lanes ? 16ull * width * height : 16, {},
-                  g.persistent_lanes ? "each pixel's result as its lane finished it" : "(persistent lanes off)", {}});
+    if (g.persistent_lanes) g.add_buffer({rays, 16ull * width * height, {}, "each pixel's result as its lane finished it", {}});
     return rays;
 }
 
@@ -20,13 +19,9 @@ void add_resolve_pass(FrameGraph& g, int view, std::uint32_t width, std::uint32_
     p.bind("FgRays", "rays." + eye, Access::Read);
     p.bind("fg_depth", "depth." + eye, Access::Write);
     if (g.effects.has(Effect::Glow)) p.bind("fg_glow", "glow." + eye, Access::Write);
-    // The naive tracer has no atlas: the program's binding gets a stand-in it never writes.
-    std::string atlas = levels;
-    if (atlas.empty()) {
-        atlas = "levels.none";
-        g.add_image({atlas, 1, 1, ImageFormat::RG32F, "(the naive tracer has no cone levels)"});
-    }
-    p.bind("fg_levels", atlas, Access::Write);
+    // The naive tracer has no atlas: its program's binding is left unused.
+    if (levels.empty()) p.leave_unused("fg_levels");
+    else p.bind("fg_levels", levels, Access::Write);
     p.set_push(ResolvePush{view, levels.empty() ? 0 : 1});
     p.invocations = {width, height, 1};
     g.add_pass(std::move(p));

@@ -4,21 +4,6 @@
 
 namespace fg {
 
-namespace {
-
-// An image the shade program declares whether or not its knob is on: the eye's size when it is, a
-// never-written pixel named NAME.off when it is not. Returns the name to bind.
-std::string image_or_stand_in(FrameGraph& g, const std::string& name, bool on, ImageFormat format,
-                              const std::string& about, const std::string& off_about) {
-    if (on) {
-        g.add_image({name, g.width, g.height, format, about});
-        return name;
-    }
-    g.add_image({name + ".off", 1, 1, format, off_about});
-    return name + ".off";
-}
-
-}  // namespace
 
 void add_shade_passes(FrameGraph& g) {
     auto knob = g.settings.knobs.find("shade_reuse");
@@ -31,18 +16,17 @@ void add_shade_passes(FrameGraph& g) {
         // the terms that read the view, and the albedo); the right eye reads the left eye's (shaded
         // first) where both see the same point. Without the knob each eye's "other" is its own, so the
         // eyes stay independent.
-        const std::string shaded = image_or_stand_in(g, "color." + eye, reuse_knob, ImageFormat::RGBA32UI,
-                                                     "shading before post as terms (shading reuse)", "(shading reuse off)");
+        const std::string shaded = "color." + eye;
+        if (reuse_knob) g.add_image({shaded, g.width, g.height, ImageFormat::RGBA32UI, "shading before post as terms (shading reuse)"});
         bool reuse = view == kRightView && reuse_knob;
         std::string other = reuse ? view_name(kLeftView) : eye;
         // Shading history: this eye's shading before post and tone map as the same terms, with their
         // age, and their hit distances, kept for the next frame.
         const bool history = g.shade_history;
-        const std::string cache = image_or_stand_in(g, "shade_cache." + eye, history, ImageFormat::RGBA32UI,
-                                                    "shading before post as terms, its age (history)", "(shading history off)");
-        const std::string cache_depth = image_or_stand_in(g, "shade_depth." + eye, history, ImageFormat::R32F,
-                                                          "hit distance of the shading (history)", "(shading history off)");
+        const std::string cache = "shade_cache." + eye, cache_depth = "shade_depth." + eye;
         if (history) {
+            g.add_image({cache, g.width, g.height, ImageFormat::RGBA32UI, "shading before post as terms, its age (history)"});
+            g.add_image({cache_depth, g.width, g.height, ImageFormat::R32F, "hit distance of the shading (history)"});
             g.keep_for_next_frame(cache);
             g.keep_for_next_frame(cache_depth);
         }
@@ -54,13 +38,22 @@ void add_shade_passes(FrameGraph& g) {
             p.bind("fg_depth", "depth." + eye, Access::Read);
             p.bind("fg_final", g.shaded_image(view), Access::Write);
             if (g.effects.has(Effect::Glow)) p.bind("fg_glow", "glow." + eye, Access::Read);
-            p.bind("fg_shaded", shaded, Access::Write);
-            p.bind("fg_other_color", reuse ? "color." + other : shaded, Access::Read);
+            if (reuse_knob) {
+                p.bind("fg_shaded", shaded, Access::Write);
+                p.bind("fg_other_color", reuse ? "color." + other : shaded, Access::Read);
+            } else {
+                p.leave_unused("fg_shaded");
+                p.leave_unused("fg_other_color");
+            }
             p.bind("fg_other_depth", "depth." + other, Access::Read);
-            p.bind("fg_history_color", history ? previous(cache) : cache, Access::Read);
-            p.bind("fg_history_depth", history ? previous(cache_depth) : cache_depth, Access::Read);
-            p.bind("fg_cache_color", cache, Access::Write);
-            p.bind("fg_cache_depth", cache_depth, Access::Write);
+            if (history) {
+                p.bind("fg_history_color", previous(cache), Access::Read);
+                p.bind("fg_history_depth", previous(cache_depth), Access::Read);
+                p.bind("fg_cache_color", cache, Access::Write);
+                p.bind("fg_cache_depth", cache_depth, Access::Write);
+            } else {
+                for (const char* b : {"fg_history_color", "fg_history_depth", "fg_cache_color", "fg_cache_depth"}) p.leave_unused(b);
+            }
             p.set_push(ShadePush{view, reuse ? 1 : 0, stride});
             return p;
         });
