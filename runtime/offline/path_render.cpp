@@ -92,6 +92,9 @@ PathRenderer::PathRenderer(const vk::Context& ctx, const Pack& pack, CameraPath 
     StereoSettings stereo;
     stereo.ipd_m = settings_.ipd_m;
     renderer_ = std::make_unique<HeadlessRenderer>(ctx, pack, frame_settings(settings_), stereo);
+    if (settings_.taa_upscale > 1.0 && !renderer_->graph().taa)
+        throw std::runtime_error("--taa-upscale needs temporal anti-aliasing, which this pack cannot have (its scene "
+                                 "reads time, or it is double precision)");
     Diagnostics diag;
     if (!check_path_params(path_, pack.manifest, diag)) throw std::runtime_error(diag.format("camera path"));
 }

@@ -75,6 +75,11 @@ int render(const RenderOptions& o) {
         stereo.ipd_m = o.ipd_m;
         stereo.world_scale = scene.world_scale;
         HeadlessRenderer renderer(ctx, *pack, frame, stereo);
+        if (o.taa_upscale > 1.0 && !renderer.graph().taa) {
+            fmt::print(stderr, "fgplay: --taa-upscale needs temporal anti-aliasing, which this pack cannot have (its scene "
+                               "reads time, or it is double precision): render it without\n");
+            return 2;
+        }
         if (o.describe) fmt::print("{}", renderer.describe());
         HeadPose head = renderer.scene_camera();
         if (o.camera) {
