@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <fmt/format.h>
 
 #include <Imath/half.h>
@@ -21,14 +22,16 @@ namespace {
 constexpr std::uint32_t kSize = 160;
 constexpr double kFovDeg = 40.0;
 
+// Where the AOV image `name` is in aov_images() (and in a frame's aovs).
+std::size_t aov_index(const std::string& name) {
+    for (std::size_t i = 0; i < aov_images().size(); ++i)
+        if (aov_images()[i].name == name) return i;
+    throw std::logic_error("no AOV image " + name);
+}
+
 // The `light` AOV of the left eye as floats, four per pixel.
 std::vector<float> light_aov(const RenderedFrame& f) {
-    std::size_t index = 0;
-    for (const auto& a : aov_images()) {
-        if (std::string(a.name) == "light") break;
-        ++index;
-    }
-    const auto& bytes = f.aovs_left.at(index);
+    const auto& bytes = f.aovs_left.at(aov_index("light"));
     std::vector<float> out(bytes.size() / sizeof(Imath::half));
     for (std::size_t i = 0; i < out.size(); ++i) {
         Imath::half h;
@@ -175,11 +178,7 @@ TEST_F(Light, marched_ao_beside_a_sphere_on_a_plane_is_the_analytic_occlusion) {
                 "bounds": {{"radius": 80}}}}
     }})", radius, kFovDeg));
     RenderedFrame f = render(pack);
-    std::size_t position = 0, normal = 0;
-    for (std::size_t i = 0; i < aov_images().size(); ++i) {
-        if (std::string(aov_images()[i].name) == "position") position = i;
-        if (std::string(aov_images()[i].name) == "normal") normal = i;
-    }
+    const std::size_t position = aov_index("position"), normal = aov_index("normal");
     std::vector<float> world(f.aovs_left[position].size() / 4);
     std::memcpy(world.data(), f.aovs_left[position].data(), f.aovs_left[position].size());
     const auto& normals = f.aovs_left[normal];
@@ -220,13 +219,7 @@ TEST_F(Light, a_glass_sphere_reflects_the_background_by_fresnels_law) {
                 "background": [{2}, {3}, {4}]}}
     }})", ior, kFovDeg, background.x, background.y, background.z));
     RenderedFrame f = render(pack);
-    std::size_t beauty = 0, position = 0, normal = 0;
-    for (std::size_t i = 0; i < aov_images().size(); ++i) {
-        const std::string name = aov_images()[i].name;
-        if (name == "beauty") beauty = i;
-        if (name == "position") position = i;
-        if (name == "normal") normal = i;
-    }
+    const std::size_t beauty = aov_index("beauty"), position = aov_index("position"), normal = aov_index("normal");
     std::vector<float> world(f.aovs_left[position].size() / 4);
     std::memcpy(world.data(), f.aovs_left[position].data(), f.aovs_left[position].size());
     auto half_at = [](const std::vector<std::byte>& bytes, std::size_t i) {
