@@ -56,7 +56,6 @@ VkFormat vk_format(ImageFormat f) {
     return VK_FORMAT_R32_SFLOAT;
 }
 
-// Standard resources every pass may bind, by the block names the templates declare.
 // The executor's stand-in for a binding a pass leaves unused: a 1x1 image of the shader's declared
 // format, or a small buffer, of that pass and binding alone (passes of one batch run without
 // barriers between them, so they share no stand-in). Not the frame graph's: it declares nothing.
@@ -70,6 +69,7 @@ ImageFormat image_format_named(const std::string& name) {
                                          "the pack with this fgc", name));
 }
 
+// Standard resources every pass may bind, by the block names the templates declare.
 const char* standard_resource(const std::string& binding) {
     if (binding == "FgFrame") return "frame";
     if (binding == "FgScene") return "scene";
@@ -234,8 +234,7 @@ void FrameExecutor::make_resources() {
     // compiled out, so nothing touches them.
     for (std::size_t i = 0; i < graph_.passes().size(); ++i)
         for (const auto& b : pass_programs_[i]->manifest->bindings) {
-            const auto& unused = graph_.passes()[i].unused;
-            if (std::find(unused.begin(), unused.end(), b.name) == unused.end()) continue;
+            if (!graph_.passes()[i].leaves_unused(b.name)) continue;
             const std::string name = stand_in_name(graph_.passes()[i], b);
             if (b.kind == "storage_image" && !images_.count(name))
                 images_[name].push_back(std::make_unique<vk::StorageImage>(ctx_, vk_format(image_format_named(b.format)), VkExtent2D{1, 1}));
@@ -294,8 +293,7 @@ void FrameExecutor::make_descriptor_sets() {
                 std::string resource;
                 for (const auto& [name, res] : pass.bindings)
                     if (name == b.name) resource = res;
-                const auto& unused = pass.unused;
-                if (resource.empty() && std::find(unused.begin(), unused.end(), b.name) != unused.end()) resource = stand_in_name(pass, b);
+                if (resource.empty() && pass.leaves_unused(b.name)) resource = stand_in_name(pass, b);
                 if (resource.empty()) {
                     const char* std_res = standard_resource(b.name);
                     if (!std_res)

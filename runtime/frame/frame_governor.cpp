@@ -97,7 +97,6 @@ FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& 
     f.stereo = level.stereo.value_or(full.stereo);
     f.cone_levels = level.cone_levels.value_or(full.cone_levels);
     f.taa = level.taa.value_or(full.taa);
-    f.output_width = f.output_height = 0;
     set_taa_upscale(f, f.taa ? level.taa_upscale.value_or(full.taa_upscale_factor) : 1.0);
     for (const auto& [k, v] : level.knobs) f.knobs[k] = v;
     return f;

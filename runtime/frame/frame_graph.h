@@ -8,6 +8,7 @@
 //
 // Adding a pass: its shader template (shaders/<name>.comp) and one builder file (<name>_pass.cpp)
 // with `void add_<name>_passes(FrameGraph&)`, listed once in frame_passes.cpp.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -82,6 +83,9 @@ struct FramePass {
     // specialization constant compiles its code out): the graph declares nothing for it, and the
     // executor binds a shared stand-in of the binding's kind.
     void leave_unused(const std::string& binding) { unused.push_back(binding); }
+    bool leaves_unused(const std::string& binding) const {
+        return std::find(unused.begin(), unused.end(), binding) != unused.end();
+    }
     std::vector<std::string> unused;
     template <class Push>
     void set_push(const Push& p) {

@@ -6,11 +6,9 @@ namespace fg {
 
 std::optional<double> distance_at_view_centre(HeadlessRenderer& renderer, const HeadPose& head, double time,
                                               std::uint32_t frame_index) {
-    const double aperture = renderer.aperture(), focus = renderer.focus();
-    renderer.set_depth_of_field(0.0, 0.0);
+    // A plain frame looks from the lens's centre; only render_samples moves the eyes over the lens.
     renderer.set_lens(glm::dvec2(0.0));
     RenderedFrame f = renderer.render(head, time, frame_index);
-    renderer.set_depth_of_field(aperture, focus);
     const auto& g = renderer.graph();
     const float t = f.depth_left.at(static_cast<std::size_t>(g.height / 2) * g.width + g.width / 2);
     if (t < 0.0f) return std::nullopt;
