@@ -1,18 +1,39 @@
 #!/usr/bin/env bash
 # Renders a thumbnail of every gallery scene (graphs/gallery/*.json) into docs/images/gallery/ and
 # rewrites docs/gallery.md from the graphs' names and descriptions. Headless, on lavapipe without a GPU.
-#   bash scripts/gallery_thumbnails.sh [size]      (default 256: one eye, size x size)
+#   bash scripts/gallery_thumbnails.sh [size] [--full]
+#     size     thumbnail size, default 256 (one eye, size x size)
+#     --full   also render the full-size offline pictures listed in OFFLINE below (minutes each),
+#              timing each render; without it the page reuses the pictures and times already in
+#              docs/images/gallery/ (NAME_full.png and NAME_full.time)
+# Tools: $FG_BUILD_DIR/compiler/fgc and $FG_BUILD_DIR/runtime/fgplay (FG_BUILD_DIR defaults to build/),
+# or FGC=... FGPLAY=... to name them directly.
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=${FG_BUILD_DIR:-$ROOT/build}
-SIZE=${1:-256}
-FGC=$BUILD/compiler/fgc
-FGPLAY=$BUILD/runtime/fgplay
+SIZE=256
+FULL=0
+for arg in "$@"; do
+  case "$arg" in
+    --full) FULL=1 ;;
+    *) SIZE=$arg ;;
+  esac
+done
+FGC=${FGC:-$BUILD/compiler/fgc}
+FGPLAY=${FGPLAY:-$BUILD/runtime/fgplay}
 IMAGES=$ROOT/docs/images/gallery
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$BUILD/mesa-cache}
+
+# Offline renders: scenes made for stills (marched shadows, AO, reflections, depth of field) get a
+# full-size picture on the page beside their thumbnail, with the fgplay render options below.
+# One line per scene: NAME <tab-free spaces> OPTIONS.
+OFFLINE='
+mandelbox_halls --size 960x540 --samples 9
+mandelbulb_dof --size 960x540 --samples 64 --aperture 0.1 --focus 1.2
+'
 
 for tool in "$FGC" "$FGPLAY"; do
   [ -x "$tool" ] || { echo "missing $tool: build first (bash scripts/fractograph.sh build)"; exit 1; }
@@ -27,16 +48,33 @@ for graph in "$ROOT"/graphs/gallery/*.json; do
   cp "$WORK/$name/left.png" "$IMAGES/$name.png"
 done
 
+if [ "$FULL" = 1 ]; then
+  while read -r name options; do
+    [ -n "$name" ] || continue
+    echo "==> $name, full size: fgplay render $name.fgpack $options"
+    # Wall time of the whole command (both eyes: fgplay render always renders a stereo pair) and
+    # the CPU time it used; the left eye is the picture.
+    /usr/bin/time -o "$WORK/$name.time" -f '%e %U %S' \
+      "$FGPLAY" render "$WORK/$name.fgpack" --out "$WORK/$name-full" $options >/dev/null
+    cp "$WORK/$name-full/left.png" "$IMAGES/${name}_full.png"
+    read -r wall user sys <"$WORK/$name.time"
+    printf '%s %s %s %s\n' "$wall" "$(echo "$user + $sys" | bc)" "$(nproc)" "$(date -u +%Y-%m-%d)" >"$IMAGES/${name}_full.time"
+  done <<<"$OFFLINE"
+fi
+
 # The page: one section per scene, in file order, from the graph's own name and description.
-/usr/bin/python3 - "$ROOT" <<'PY'
-import json, pathlib, sys
+OFFLINE="$OFFLINE" /usr/bin/python3 - "$ROOT" <<'PY'
+import json, os, pathlib, sys
 root = pathlib.Path(sys.argv[1])
+offline = dict(line.split(None, 1) for line in os.environ["OFFLINE"].strip().splitlines())
 out = ["# The gallery", "",
        "Scenes in `graphs/gallery/`, each a graph you can compile and fly through:",
        "`fgc compile graphs/gallery/NAME.json -o NAME.fgpack`, then `fgplay view NAME.fgpack` or `fgplay xr NAME.fgpack`.",
        "The thumbnails are the left eye of the scene's start view, rendered headless on lavapipe by",
        "`scripts/gallery_thumbnails.sh` (do not edit this page by hand: that script writes it).",
-       "Every scene is also rendered by the test suite (`tests/runtime/gallery_test.cpp`) and checked against the CPU twin.", ""]
+       "Every scene is also rendered by the test suite (`tests/runtime/gallery_test.cpp`) and checked against the CPU twin.",
+       "Scenes lit for stills also show a full-size offline render, with the command that made it and what it took",
+       "(`scripts/gallery_thumbnails.sh --full` renders them again).", ""]
 graphs = [(path, json.loads(path.read_text())) for path in sorted((root / "graphs" / "gallery").glob("*.json"))]
 # A grid of thumbnails first (users look rather than read), then what each scene is made of.
 columns = 4
@@ -50,12 +88,27 @@ for i in range(0, len(graphs), columns):
 out.append("")
 for path, g in graphs:
     types = sorted({n["type"] for n in g["nodes"] if n["type"].startswith(("fractal.", "prim.", "op."))})
+    lights = sorted({n["type"] for n in g["nodes"] if n["type"] in
+                     ("light.soft_shadow", "light.marched_ao", "light.specular", "light.reflection")})
     scene = g.get("scene", {})
     extras = [k for k in ("fog", "glow", "vignette") if k in scene]
     out += [f'<a id="{path.stem}"></a>', "", f"## {g['name']}", "",
             g.get("description", ""), "",
             f"`graphs/gallery/{path.name}` · nodes: {', '.join('`%s`' % t for t in types)}"
+            + (f" · marched light: {', '.join('`%s`' % t for t in lights)}" if lights else "")
             + (f" · effects: {', '.join(extras)}" if extras else " · no fog or glow"), ""]
+    stem = path.stem
+    picture = root / "docs" / "images" / "gallery" / f"{stem}_full.png"
+    timing = root / "docs" / "images" / "gallery" / f"{stem}_full.time"
+    if stem in offline and picture.exists() and timing.exists():
+        wall, cpu, cores, day = timing.read_text().split()
+        out += [f"![{g['name']}, full size](images/gallery/{stem}_full.png)", "",
+                "```",
+                f"fgc compile graphs/gallery/{path.name} -o {stem}.fgpack",
+                f"fgplay render {stem}.fgpack --out {stem} {offline[stem].strip()}",
+                "```", "",
+                f"{float(wall):.0f} s for the stereo pair (`fgplay render` renders both eyes; the picture is the left one), "
+                f"{float(cpu):.0f} s of CPU time, on lavapipe with {cores} CPU cores ({day}).", ""]
 (root / "docs" / "gallery.md").write_text("\n".join(out))
 PY
-echo "wrote docs/gallery.md and $(ls "$IMAGES" | wc -l) images in docs/images/gallery/"
+echo "wrote docs/gallery.md and $(ls "$IMAGES" | wc -l) files in docs/images/gallery/"
