@@ -36,6 +36,7 @@ EffectSet find_effects(const IrGraph& ir) {
     if (s.vignette) e.add(Effect::Vignette);
     if (s.foveation) e.add(Effect::Foveation);
     if (s.has_background_gradient()) e.add(Effect::BackgroundGradient);
+    if (!s.light.auxiliary.empty()) e.add(Effect::Lights);
     return e;
 }
 

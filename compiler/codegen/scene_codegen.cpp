@@ -166,7 +166,8 @@ void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const st
     }
 }
 
-std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
+std::string SceneCodegen::value_of(const IrInput& in, Context context) const {
+    const bool shading = context != Context::Distance, towards_any = context == Context::LightTerms;
     std::string v;
     switch (in.kind) {
         case IrInput::Kind::Node: v = variable(in.node, in.port); break;
@@ -181,7 +182,10 @@ std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
             switch (in.implicit) {
                 case ImplicitSource::Position: v = "p"; break;
                 case ImplicitSource::Time: v = in_precision("fg_frame.seconds", ValueType::Float); break;
-                case ImplicitSource::Light: v = in_precision("fg_scene.light_dir.xyz", ValueType::Vec3); break;
+                case ImplicitSource::Light: v = in_precision(towards_any ? "fg_light" : "fg_scene.light_dir.xyz", ValueType::Vec3); break;
+                case ImplicitSource::LightDistance:
+                    v = in_precision(towards_any ? "fg_light_distance" : fmt::format("{:g}", kDirectionalLightDistance), ValueType::Float);
+                    break;
                 case ImplicitSource::ToCamera: v = in_precision(shading ? "fg_to_camera" : "vec3(0.0)", ValueType::Vec3); break;
                 case ImplicitSource::Normal: v = in_precision(shading ? "fg_normal" : "vec3(0.0)", ValueType::Vec3); break;
                 case ImplicitSource::None: v = lowered("0.0"); break;
@@ -192,7 +196,7 @@ std::string SceneCodegen::value_of(const IrInput& in, bool shading) const {
     return v;
 }
 
-void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const {
+void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, Context context) const {
     std::vector<bool> needed = needed_by(roots);
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
         if (!needed[i]) continue;
@@ -203,7 +207,7 @@ void SceneCodegen::function_body(GlslWriter& w, const std::vector<const IrInput*
             decl += fmt::format(" {} {};", type_of(n.output_types[k]), variable(static_cast<int>(i), static_cast<int>(k)));
         w.line(decl + fmt::format("  // {} ({})", n.id, n.def->type), o);
         std::string args;
-        for (const auto& in : n.inputs) args += (args.empty() ? "" : ", ") + value_of(in, shading);
+        for (const auto& in : n.inputs) args += (args.empty() ? "" : ", ") + value_of(in, context);
         for (std::size_t k = 0; k < n.output_types.size(); ++k)
             args += (args.empty() ? "" : ", ") + variable(static_cast<int>(i), static_cast<int>(k));
         w.line(fmt::format("    {}({});", n.def->function_name(), args), o);
@@ -214,8 +218,8 @@ void SceneCodegen::distance_function(GlslWriter& w) const {
     const auto& d = ir_.outputs.at("distance");
     w.line(double_ ? "double fg_scene_distance_d(dvec3 p)" : "float fg_scene_distance(vec3 p)", generated());
     w.line("{", generated());
-    function_body(w, {&d}, false);
-    w.line(fmt::format("    return {};", value_of(d, false)), generated());
+    function_body(w, {&d}, Context::Distance);
+    w.line(fmt::format("    return {};", value_of(d, Context::Distance)), generated());
     w.line("}", generated());
     w.blank();
     if (!double_) return;
@@ -228,9 +232,10 @@ void SceneCodegen::distance_function(GlslWriter& w) const {
     w.blank();
 }
 
-void SceneCodegen::shading_function_head(GlslWriter& w, const char* name) const {
+void SceneCodegen::shading_function_head(GlslWriter& w, const char* name, const char* type, const char* extra_parameters) const {
     // In double precision p is relative to the anchor, and the bodies see the absolute point.
-    w.line(fmt::format("FgSurface {}(vec3 {}, vec3 fg_to_camera, vec3 fg_normal)", name, double_ ? "fg_relative_p" : "p"),
+    w.line(fmt::format("{} {}(vec3 {}, vec3 fg_to_camera, vec3 fg_normal{})", type, name, double_ ? "fg_relative_p" : "p",
+                       extra_parameters),
            generated());
     w.line("{", generated());
     if (double_) w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
@@ -242,13 +247,8 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
            "vec3 specular; vec3 reflection; };",
            generated());
     shading_function_head(w, "fg_scene_surface");
-    function_body(w, surface_roots(), true);
-    auto field = [&](const char* name, const char* fallback) {
-        auto it = ir_.outputs.find(name);
-        if (it == ir_.outputs.end()) return std::string(fallback);
-        std::string v = value_of(it->second, true);
-        return double_ ? fmt::format("{}({})", type_name(it->second.type), v) : v;
-    };
+    function_body(w, surface_roots(), Context::Surface);
+    auto field = [&](const char* name, const char* fallback) { return output_or(name, fallback, Context::Surface); };
     w.line("    FgSurface s;", generated());
     w.line(fmt::format("    s.albedo = {};", field("albedo", "fg_scene.albedo.xyz")), generated());
     w.line(fmt::format("    s.diffuse = {};", field("diffuse", "0.0")), generated());
@@ -261,6 +261,34 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     w.line("}", generated());
     w.blank();
     view_terms_function(w, field);
+    if (!ir_.scene.light.auxiliary.empty()) light_terms_function(w);
+}
+
+std::string SceneCodegen::output_or(const char* name, const char* fallback, Context context) const {
+    auto it = ir_.outputs.find(name);
+    if (it == ir_.outputs.end()) return fallback;
+    std::string v = value_of(it->second, context);
+    return double_ ? fmt::format("{}({})", type_name(it->second.type), v) : v;
+}
+
+void SceneCodegen::light_terms_function(GlslWriter& w) const {
+    // The terms that depend on the light, evaluated again for each auxiliary light: its direction
+    // and distance replace the main light's in every node that reads them.
+    std::vector<const IrInput*> roots;
+    for (const char* name : {"diffuse", "shadow", "specular"})
+        if (auto it = ir_.outputs.find(name); it != ir_.outputs.end()) roots.push_back(&it->second);
+    w.line(fmt::format("#define FG_DIRECTIONAL_LIGHT_DISTANCE {:g}", kDirectionalLightDistance), generated());
+    w.line("struct FgLightTerms { float diffuse; float shadow; vec3 specular; };", generated());
+    shading_function_head(w, "fg_scene_light_terms", "FgLightTerms", ", vec3 fg_light, float fg_light_distance");
+    function_body(w, roots, Context::LightTerms);
+    w.line("    FgLightTerms l;", generated());
+    w.line(fmt::format("    l.diffuse = {};", output_or("diffuse", "max(dot(fg_normal, fg_light), 0.0)", Context::LightTerms)),
+           generated());
+    w.line(fmt::format("    l.shadow = {};", output_or("shadow", "1.0", Context::LightTerms)), generated());
+    w.line(fmt::format("    l.specular = {};", output_or("specular", "vec3(0.0)", Context::LightTerms)), generated());
+    w.line("    return l;", generated());
+    w.line("}", generated());
+    w.blank();
 }
 
 void SceneCodegen::view_terms_function(GlslWriter& w, const std::function<std::string(const char*, const char*)>& field) const {
@@ -271,7 +299,7 @@ void SceneCodegen::view_terms_function(GlslWriter& w, const std::function<std::s
         return it != ir_.outputs.end() && reads_to_camera(it->second) ? field(name, fallback) : std::string(fallback);
     };
     shading_function_head(w, "fg_scene_view_terms");
-    function_body(w, view_roots(), true);
+    function_body(w, view_roots(), Context::Surface);
     w.line("    FgSurface s = FgSurface(vec3(0.0), 0.0, 1.0, 0.0, 0.0, vec3(0.0), 1.0, vec3(0.0), vec3(0.0));", generated());
     for (const auto& [name, fallback] : kScalarTerms) w.line(fmt::format("    s.{} = {};", name, view(name, fallback)), generated());
     w.line("    return s;", generated());
@@ -302,8 +330,8 @@ void SceneCodegen::trap_function(GlslWriter& w) const {
         w.line("    return vec4(0.0);", generated());
     } else {
         if (double_) w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
-        function_body(w, {&*trap}, false);
-        w.line(fmt::format("    return vec4({});", value_of(*trap, false)), generated());
+        function_body(w, {&*trap}, Context::Distance);
+        w.line(fmt::format("    return vec4({});", value_of(*trap, Context::Distance)), generated());
     }
     w.line("}", generated());
     w.blank();

@@ -4,6 +4,8 @@
 //   float fg_scene_distance(vec3 p)                      only what the distance needs
 //   FgSurface fg_scene_surface(vec3 p, vec3 fg_to_camera, vec3 fg_normal)   everything else
 //   FgSurface fg_scene_view_terms(...)   only the terms that read the view (shading reuse)
+//   FgLightTerms fg_scene_light_terms(..., fg_light, fg_light_distance)   diffuse, shadow and specular
+//       towards any light (scenes with auxiliary lights)
 // With scene.precision "double" the bodies are lowered to double (double_lowering.h) and evaluated
 // at fg_anchor() + p: the passes march in float relative to the camera, whose position the frame
 // uniforms hold in double (hi + lo floats), so positions keep their digits at any zoom.
@@ -35,6 +37,9 @@ public:
     void trap_function(GlslWriter& w) const;
 
 private:
+    // Where a function's body is evaluated: the implicit inputs each one sees.
+    enum class Context { Distance, Surface, LightTerms };
+
     const IrGraph& ir_;
     const NodeLibrary& library_;
     bool double_ = ir_.scene.double_precision;
@@ -52,13 +57,17 @@ private:
     bool reads_to_camera(const IrInput& root) const;
     std::vector<const IrInput*> view_roots() const;
     // "FgSurface name(p, fg_to_camera, fg_normal) {" and, in double, the absolute point.
-    void shading_function_head(GlslWriter& w, const char* name) const;
+    void shading_function_head(GlslWriter& w, const char* name, const char* type = "FgSurface",
+                               const char* extra_parameters = "") const;
+    // An output's value in a shading function, or `fallback` where the graph binds none.
+    std::string output_or(const char* name, const char* fallback, Context context) const;
+    void light_terms_function(GlslWriter& w) const;
     // FgSurface fg_scene_view_terms(p, fg_to_camera, fg_normal): only the view_roots() outputs.
     void view_terms_function(GlslWriter& w, const std::function<std::string(const char*, const char*)>& field) const;
     // Bodies of the nodes in `want` whose type is not in `skip` (each type and instance once).
     void bodies(GlslWriter& w, const std::vector<bool>& want, const std::vector<bool>& skip) const;
-    void function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, bool shading) const;
-    std::string value_of(const IrInput& in, bool shading) const;
+    void function_body(GlslWriter& w, const std::vector<const IrInput*>& roots, Context context) const;
+    std::string value_of(const IrInput& in, Context context) const;
     static std::string variable(int node, int port);
 };
 

@@ -27,6 +27,7 @@ enum class Effect : std::uint32_t {
     Shadow,              // the light's visibility, marched towards it (light.soft_shadow)
     Specular,            // specular highlights (light.specular)
     Reflection,          // one mirror bounce (light.reflection): the shade pass marches the reflected ray
+    Lights,              // auxiliary lights (scene.light.auxiliary): the light's terms again for each
     Count
 };
 

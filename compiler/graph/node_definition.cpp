@@ -15,6 +15,7 @@ constexpr ImplicitInfo kImplicit[] = {
     {ImplicitSource::Position, "position", ValueType::Vec3, false},
     {ImplicitSource::Time, "time", ValueType::Float, false},
     {ImplicitSource::Light, "light", ValueType::Vec3, true},
+    {ImplicitSource::LightDistance, "light_distance", ValueType::Float, true},
     {ImplicitSource::ToCamera, "to_camera", ValueType::Vec3, true},
     {ImplicitSource::Normal, "normal", ValueType::Vec3, true},
 };

@@ -22,7 +22,9 @@ struct PortType {
 
 // What an unbound input takes: values the runtime supplies. Position and time exist everywhere;
 // the others only while shading a hit (a node using them is shade-only).
-enum class ImplicitSource { None, Position, Time, Light, ToCamera, Normal };
+enum class ImplicitSource { None, Position, Time, Light, LightDistance, ToCamera, Normal };
+// `light_distance` of a directional light: farther than anything a float scene holds.
+constexpr double kDirectionalLightDistance = 1e30;
 
 std::string_view implicit_source_name(ImplicitSource s);          // "position", "light", ...
 std::optional<ImplicitSource> parse_implicit_source(std::string_view s);

@@ -37,6 +37,32 @@ struct SceneReader : JsonFieldReader {
     }
 };
 
+// Each a point ("position") or directional ("direction") light with its colour.
+std::vector<SceneSettings::Light::Auxiliary> auxiliary_lights(SceneReader& r, const json& list, const std::string& ptr) {
+    std::vector<SceneSettings::Light::Auxiliary> lights;
+    if (list.size() > SceneSettings::Light::kMaxAuxiliary)
+        r.error("at most " + std::to_string(SceneSettings::Light::kMaxAuxiliary) + " auxiliary lights", ptr);
+    for (std::size_t i = 0; i < list.size() && i < SceneSettings::Light::kMaxAuxiliary; ++i) {
+        const std::string p = ptr + "/" + std::to_string(i);
+        if (!r.is_object(list[i], p)) continue;
+        r.unknown_keys(list[i], p, {"position", "direction", "color"}, "light setting");
+        SceneSettings::Light::Auxiliary light;
+        const bool point = SceneReader::find(list[i], "position") != nullptr;
+        if (point == (SceneReader::find(list[i], "direction") != nullptr)) {
+            r.error("a light has either a position (a point light) or a direction (a directional light)", p);
+            continue;
+        }
+        if (point) r.vector(list[i], "position", p, light.position.emplace());
+        r.vector(list[i], "direction", p, light.direction);
+        r.vector(list[i], "color", p, light.color, kColour);
+        double len = glm::length(light.direction);
+        if (len < 1e-9) r.error("light direction has zero length", p + "/direction");
+        else if (std::abs(len - 1.0) > 1e-12) light.direction /= len;
+        lights.push_back(light);
+    }
+    return lights;
+}
+
 }  // namespace
 
 SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagnostics& diag) {
@@ -57,7 +83,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
         r.optional(*c, "fov_deg", p, s.camera.fov_deg, NumberRange{10.0, 170.0});
         if (s.camera.position == s.camera.target) r.error("camera position and target coincide", p + "/target");
     }
-    if (const json* l = r.block(j, "light", ptr, {"direction", "color", "ambient", "sss_color", "rim_color"})) {
+    if (const json* l = r.block(j, "light", ptr, {"direction", "color", "ambient", "sss_color", "rim_color", "auxiliary"})) {
         std::string p = ptr + "/light";
         r.vector(*l, "direction", p, s.light.direction);
         r.vector(*l, "color", p, s.light.color, kColour);
@@ -69,6 +95,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
         double len = glm::length(s.light.direction);
         if (len < 1e-9) r.error("light direction has zero length", p + "/direction");
         else if (std::abs(len - 1.0) > 1e-12) s.light.direction /= len;
+        if (const json* a = r.array_field(*l, "auxiliary", p)) s.light.auxiliary = auxiliary_lights(r, *a, p + "/auxiliary");
     }
     r.vector(j, "albedo", ptr, s.albedo, kColour);
     if (const json* b = JsonFieldReader::find(j, "background")) {
@@ -143,6 +170,12 @@ json scene_settings_to_json(const SceneSettings& s) {
     j["light"] = {{"direction", v(s.light.direction)},   {"color", v(s.light.color)},
                   {"ambient", v(s.light.ambient)},       {"sss_color", v(s.light.sss_color)},
                   {"rim_color", v(s.light.rim_color)}};
+    for (const auto& a : s.light.auxiliary) {
+        json light = {{"color", v(a.color)}};
+        if (a.position) light["position"] = v(*a.position);
+        else light["direction"] = v(a.direction);
+        j["light"]["auxiliary"].push_back(light);
+    }
     j["albedo"] = v(s.albedo);
     j["background"] = {{"top", v(s.background.top)}, {"bottom", v(s.background.bottom)}};
     if (s.fog) j["fog"] = {{"color", v(s.fog->color)}, {"density", s.fog->density}};

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -39,6 +40,17 @@ struct SceneSettings {
         glm::dvec3 ambient{0.12, 0.14, 0.18};
         glm::dvec3 sss_color{1.0, 0.4, 0.25};
         glm::dvec3 rim_color{0.6, 0.8, 1.0};
+        // Lights beside the main one ("auxiliary"), each lighting the surface by the same diffuse,
+        // shadow and specular terms: directional, or a point whose colour is its intensity one scene
+        // unit away (it falls off with the square of the distance).
+        struct Auxiliary {
+            std::optional<glm::dvec3> position;        // a point light; none: directional
+            glm::dvec3 direction{0.0, 1.0, 0.0};       // towards a directional light
+            glm::dvec3 color{1.0, 1.0, 1.0};
+            bool operator==(const Auxiliary&) const = default;
+        };
+        static constexpr std::size_t kMaxAuxiliary = 4;
+        std::vector<Auxiliary> auxiliary;
         bool operator==(const Light&) const = default;
     } light;
     glm::dvec3 albedo{0.8, 0.8, 0.8};                 // when the graph binds no albedo

@@ -1,4 +1,5 @@
-void fg_light_soft_shadow(vec3 position, vec3 normal, vec3 light_dir, float angle, float start, float max_distance, int steps,
+void fg_light_soft_shadow(vec3 position, vec3 normal, vec3 light_dir, float light_distance, float angle, float start,
+                          float max_distance, int steps,
                           OUT(float) shadow)
 {
     float slope = tan(angle * (FG_PI / 180.0));
@@ -7,7 +8,8 @@ void fg_light_soft_shadow(vec3 position, vec3 normal, vec3 light_dir, float angl
     // -1 fully hidden.
     float passage = 1.0;
     float t = start;
-    for (int i = 0; i < steps && t < max_distance && passage > -1.0; i++) {
+    float end = min(max_distance, light_distance);
+    for (int i = 0; i < steps && t < end && passage > -1.0; i++) {
         float h = fg_scene_distance(origin + light_dir * t);
         passage = min(passage, h / (slope * t));
         // Inside the surface h is negative: step on by the smallest step, deeper into the shadow.

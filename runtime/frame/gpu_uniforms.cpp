@@ -82,6 +82,13 @@ GpuScene make_gpu_scene(const SceneSettings& s) {
     g.exposure = static_cast<float>(s.exposure);
     g.far_limit = static_cast<float>(s.max_distance);
     g.vignette = s.vignette ? static_cast<float>(s.vignette->strength) : 0.0f;
+    static_assert(std::size(g.auxiliary_light) == SceneSettings::Light::kMaxAuxiliary);
+    g.auxiliary_lights = static_cast<uint>(s.light.auxiliary.size());
+    for (std::size_t i = 0; i < s.light.auxiliary.size(); ++i) {
+        const auto& light = s.light.auxiliary[i];
+        g.auxiliary_light[i] = light.position ? glm::vec4(v3(*light.position), 1.0f) : glm::vec4(v3(light.direction), 0.0f);
+        g.auxiliary_color[i] = v4(light.color);
+    }
     return g;
 }
 

@@ -46,6 +46,38 @@ TEST(SceneSettings, locomotion_limits_reach_the_manifest_typed) {
     EXPECT_EQ(loco.speed_per_distance, fg::LocomotionSettings{}.speed_per_distance);
 }
 
+TEST(SceneSettings, an_auxiliary_light_is_a_point_or_a_direction_and_there_are_at_most_four) {
+    auto g = minimal_graph();
+    json both = {{"position", {0, 1, 0}}, {"direction", {0, 1, 0}}};
+    g["scene"]["light"]["auxiliary"] = {both, {{"color", 1.0}}, {{"positon", {0, 1, 0}}}};
+    auto diag = check_front(g);
+    const std::string either = "a light has either a position (a point light) or a direction (a directional light)";
+    EXPECT_TRUE(has_error(diag, "/scene/light/auxiliary/0", "", either)) << diag.format();
+    EXPECT_TRUE(has_error(diag, "/scene/light/auxiliary/1", "", either)) << diag.format();
+    EXPECT_TRUE(has_error(diag, "/scene/light/auxiliary/2/positon", "", "did you mean \"position\"?")) << diag.format();
+    g["scene"]["light"]["auxiliary"] = json::array();
+    for (int i = 0; i < 5; ++i) g["scene"]["light"]["auxiliary"].push_back({{"direction", {0, 1, 0}}});
+    EXPECT_TRUE(has_error(check_front(g), "/scene/light/auxiliary", "", "at most 4 auxiliary lights"));
+}
+
+TEST(SceneSettings, auxiliary_lights_reach_the_manifest_and_read_back) {
+    auto g = minimal_graph();
+    g["scene"]["light"]["auxiliary"] = {{{"position", {1, 2, 3}}, {"color", {4, 5, 6}}}, {{"direction", {0, 2, 0}}}};
+    fg::Diagnostics diag;
+    auto r = fg::test::compile_text(g.dump(), diag);
+    ASSERT_TRUE(r) << diag.format();
+    const auto& lights = r->manifest.scene.light.auxiliary;
+    ASSERT_EQ(lights.size(), 2u);
+    EXPECT_EQ(lights[0].position, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(lights[0].color, glm::dvec3(4, 5, 6));
+    EXPECT_FALSE(lights[1].position);
+    EXPECT_EQ(lights[1].direction, glm::dvec3(0, 1, 0));
+    auto read = fg::manifest_from_json(json::parse(fg::manifest_to_json(r->manifest).dump()), diag);
+    ASSERT_TRUE(read) << diag.format();
+    EXPECT_TRUE(read->scene == r->manifest.scene);
+    EXPECT_TRUE(r->manifest.effects.has(fg::Effect::Lights));
+}
+
 // What the compiler encodes, the pack reader decodes to the very same settings (the light direction
 // is not normalised a second time), so the runtime sees what the compiler saw.
 TEST(SceneSettings, what_the_compiler_encodes_decodes_to_the_same_settings) {

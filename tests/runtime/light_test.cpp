@@ -1,7 +1,8 @@
 // The light nodes against closed-form answers, on real frames (the `light` AOV: specular rgb,
 // shadow alpha): a sphere over a plane lit at 45 degrees casts its shadow where the geometry puts
 // it, with a penumbra as wide as the light's angular size makes it at each edge; a highlight peaks
-// where the normal halves the angle between the light and the camera.
+// where the normal halves the angle between the light and the camera; auxiliary lights light by the
+// same terms, a point light by the inverse square of its distance, its shadow cast from its point.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,6 +40,21 @@ std::vector<float> light_aov(const RenderedFrame& f) {
         out[i] = h;
     }
     return out;
+}
+
+// Channel value i of a half-float AOV image.
+double half_at(const std::vector<std::byte>& bytes, std::size_t i) {
+    Imath::half h;
+    std::memcpy(&h, bytes.data() + i * sizeof h, sizeof h);
+    return static_cast<double>(h);
+}
+
+// The `position` AOV: xyz world position, w the distance along the ray (not finite: a miss).
+std::vector<float> world_positions(const RenderedFrame& f) {
+    const auto& bytes = f.aovs_left[aov_index("position")];
+    std::vector<float> world(bytes.size() / sizeof(float));
+    std::memcpy(world.data(), bytes.data(), bytes.size());
+    return world;
 }
 
 RenderedFrame render(const Pack& pack) {
@@ -178,18 +194,15 @@ TEST_F(Light, marched_ao_beside_a_sphere_on_a_plane_is_the_analytic_occlusion) {
                 "bounds": {{"radius": 80}}}}
     }})", radius, kFovDeg));
     RenderedFrame f = render(pack);
-    const std::size_t position = aov_index("position"), normal = aov_index("normal");
-    std::vector<float> world(f.aovs_left[position].size() / 4);
-    std::memcpy(world.data(), f.aovs_left[position].data(), f.aovs_left[position].size());
-    const auto& normals = f.aovs_left[normal];
+    const std::vector<float> world = world_positions(f);
+    const auto& normals = f.aovs_left[aov_index("normal")];
     double worst = 0.0, worst_d = 0.0;
     std::size_t checked = 0;
     for (std::size_t i = 0; i < kSize * kSize; ++i) {
         const double x = world[4 * i], y = world[4 * i + 1], z = world[4 * i + 2];
         const double d = std::hypot(x, z);
         if (std::abs(y) > 1e-3 || d < 0.7 * radius || d > 3.0 * radius) continue;
-        Imath::half ao;
-        std::memcpy(&ao, normals.data() + (4 * i + 3) * sizeof ao, sizeof ao);
+        const double ao = half_at(normals, 4 * i + 3);
         const double expected = 1.0 - std::pow(radius / std::hypot(d, radius), 3.0);
         if (std::abs(ao - expected) > worst) worst = std::abs(ao - expected), worst_d = d;
         ++checked;
@@ -219,14 +232,8 @@ TEST_F(Light, a_glass_sphere_reflects_the_background_by_fresnels_law) {
                 "background": [{2}, {3}, {4}]}}
     }})", ior, kFovDeg, background.x, background.y, background.z));
     RenderedFrame f = render(pack);
-    const std::size_t beauty = aov_index("beauty"), position = aov_index("position"), normal = aov_index("normal");
-    std::vector<float> world(f.aovs_left[position].size() / 4);
-    std::memcpy(world.data(), f.aovs_left[position].data(), f.aovs_left[position].size());
-    auto half_at = [](const std::vector<std::byte>& bytes, std::size_t i) {
-        Imath::half h;
-        std::memcpy(&h, bytes.data() + i * sizeof h, sizeof h);
-        return static_cast<double>(h);
-    };
+    const std::size_t beauty = aov_index("beauty"), normal = aov_index("normal");
+    const std::vector<float> world = world_positions(f);
     double worst = 0.0, worst_cos = 0.0;
     std::size_t checked = 0;
     for (std::size_t i = 0; i < kSize * kSize; ++i) {
@@ -249,4 +256,103 @@ TEST_F(Light, a_glass_sphere_reflects_the_background_by_fresnels_law) {
     std::printf("%s\n", figures.c_str());
     EXPECT_GT(checked, 2000u) << figures;
     EXPECT_LE(worst, 0.02) << figures;
+}
+
+TEST_F(Light, an_auxiliary_directional_light_lights_as_the_main_one_does) {
+    // The same scene lit once by the main light and once by an auxiliary light in its place: the
+    // shade pass evaluates the graph's shadow and specular towards each by the same code.
+    auto pack_lit_by = [](const std::string& light) {
+        return test::compile_pack(fmt::format(R"({{
+          "format": "fractograph-graph", "version": 1, "name": "sphere over a plane",
+          "nodes": [
+            {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, 0.8, 0.0]}}}},
+            {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": 0.4}}}},
+            {{"id": "ground", "type": "prim.plane"}},
+            {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
+            {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": 3.0, "start": 0.002, "max_distance": 6.0, "steps": 128}}}},
+            {{"id": "gloss", "type": "light.specular", "inputs": {{"roughness": 0.3}}}}
+          ],
+          "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow", "specular": "gloss.specular"}},
+          "scene": {{"camera": {{"position": [0, 2.5, 3], "target": [0, 0.3, 0], "fov_deg": 50}},
+                    "light": {{"direction": [0.70710678, 0.70710678, 0], "ambient": 0.1, {}}}, "albedo": 0.6, "bounds": {{"radius": 20}}}}
+        }})", light));
+    };
+    const RenderedFrame main_light = render(pack_lit_by(R"("color": [1.2, 1.0, 0.8])"));
+    const RenderedFrame auxiliary = render(pack_lit_by(
+        R"("color": 0, "auxiliary": [{"direction": [0.70710678, 0.70710678, 0], "color": [1.2, 1.0, 0.8]}])"));
+    const auto& a = main_light.aovs_left[aov_index("beauty")];
+    const auto& b = auxiliary.aovs_left[aov_index("beauty")];
+    double worst = 0.0, brightest = 0.0;
+    for (std::size_t i = 0; i < kSize * kSize * 4; ++i) {
+        if (i % 4 == 3) continue;
+        worst = std::max(worst, std::abs(half_at(a, i) - half_at(b, i)) / std::max(half_at(a, i), 0.05));
+        brightest = std::max(brightest, half_at(a, i));
+    }
+    std::string figures = fmt::format("beauty lit by the auxiliary light at most {:.3f} % from the main light's (brightest {:.2f})",
+                                      100.0 * worst, brightest);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_GT(brightest, 0.5) << "the scene is lit: " << figures;
+    EXPECT_LE(worst, 0.002) << figures;
+}
+
+TEST_F(Light, a_point_light_falls_off_with_the_square_of_its_distance_and_shadows_only_what_lies_before_it) {
+    // A point light 1.2 above the plane y = 0, a ball of radius 0.2 at half its height below it and
+    // a large ball of radius 1 above it, beyond the light: the plane is lit by I cos(theta) / d^2,
+    // the small ball's shadow is the disc its tangent cone cuts, and the large ball shadows nothing
+    // (a march towards a directional light would pass it). The camera looks down from between them.
+    const double light_height = 1.2, ball_height = 0.6, ball_radius = 0.2, intensity = 2.0, albedo = 0.5;
+    Pack pack = test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "point light",
+      "nodes": [
+        {{"id": "low", "type": "xform.translate", "inputs": {{"offset": [0.0, {1}, 0.0]}}}},
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "low.p", "radius": {2}}}}},
+        {{"id": "high", "type": "xform.translate", "inputs": {{"offset": [0.0, 3.5, 0.0]}}}},
+        {{"id": "cover", "type": "prim.sphere", "inputs": {{"p": "high.p", "radius": 1.0}}}},
+        {{"id": "ground", "type": "prim.plane"}},
+        {{"id": "balls", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "cover.distance"}}}},
+        {{"id": "all", "type": "op.union", "inputs": {{"a": "balls.distance", "b": "ground.distance"}}}},
+        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": 0.3, "start": 0.002, "max_distance": 10.0, "steps": 256}}}}
+      ],
+      "outputs": {{"distance": "all.distance", "shadow": "shadow.shadow"}},
+      "scene": {{"camera": {{"position": [0, 1.9, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 90}},
+                "light": {{"color": 0, "ambient": 0, "auxiliary": [{{"position": [0, {0}, 0], "color": {3}}}]}},
+                "albedo": {4}, "bounds": {{"radius": 20}}}}
+    }})", light_height, ball_height, ball_radius, intensity, albedo));
+    RenderedFrame f = render(pack);
+    const std::vector<float> world = world_positions(f);
+    const auto& beauty = f.aovs_left[aov_index("beauty")];
+    // The tangent cone from the light to the ball meets the plane at this radius.
+    const double shadow_radius = light_height * std::tan(std::asin(ball_radius / (light_height - ball_height)));
+    const double pixel = 2.0 * 1.9 / kSize;
+    double worst = 0.0, worst_r = 0.0;
+    std::size_t lit = 0;
+    // Along the centre row: where the light falls to half of what reaches the plane unshadowed.
+    double edge = -1.0, previous_r = 0.0, previous_share = 0.0;
+    const std::size_t row = kSize / 2;
+    for (std::size_t i = 0; i < kSize * kSize; ++i) {
+        const glm::dvec3 p(world[4 * i], world[4 * i + 1], world[4 * i + 2]);
+        if (std::abs(p.y) > 0.05) continue;   // the ball (a hit lies up to the pixel's footprint above the plane)
+        const glm::dvec3 to_light = glm::dvec3(0.0, light_height, 0.0) - p;
+        const double d = glm::length(to_light);
+        const double expected = albedo * intensity * (to_light.y / d) / (d * d);
+        const double share = half_at(beauty, 4 * i) / expected;
+        const double r = std::hypot(p.x, p.z);
+        if (i / kSize == row && p.x > 0.0) {
+            if (edge < 0.0 && previous_share < 0.5 && share >= 0.5 && previous_r > 0.0)
+                edge = previous_r + (0.5 - previous_share) / (share - previous_share) * (r - previous_r);
+            previous_r = r, previous_share = share;
+        }
+        if (r < shadow_radius + 4.0 * pixel) continue;   // outside the penumbra
+        if (std::abs(share - 1.0) > worst) worst = std::abs(share - 1.0), worst_r = r;
+        ++lit;
+    }
+    std::string figures = fmt::format("{} lit plane pixels at most {:.2f} % from I cos / d^2 (at r = {:.3f}); the shadow's edge at "
+                                      "r = {:.4f}, the tangent cone's {:.4f} (a pixel is {:.4f})",
+                                      lit, 100.0 * worst, worst_r, edge, shadow_radius, pixel);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_GT(lit, 10000u) << figures;
+    EXPECT_LE(worst, 0.01) << figures;
+    EXPECT_NEAR(edge, shadow_radius, pixel) << figures;
 }

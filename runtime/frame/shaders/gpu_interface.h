@@ -113,11 +113,15 @@ struct GpuScene {
     vec3 bounds_centre;      // rays outside this sphere miss
     float bounds_radius;
     vec3 bounds_centre_lo;   // what float loses of the centre (double packs add it)
-    float unused_0;
+    uint auxiliary_lights;   // how many of auxiliary_light hold a light (FG_HAS_LIGHTS)
     float exposure;
     float far_limit;         // the march's far limit, in scene units
     float vignette;          // the comfort vignette's strength (0: none)
     float fade;              // 0 none, 1 black: snap turns, the head in the surface
+    // Each auxiliary light: xyz a position (w 1: a point light, whose colour is its intensity one
+    // scene unit away) or the unit direction towards it (w 0); its colour.
+    vec4 auxiliary_light[4];
+    vec4 auxiliary_color[4];
 };
 
 // Push constants, one struct per pass. `stride` is 1 for a full-resolution dispatch, 2 for the
@@ -185,6 +189,6 @@ static_assert(offsetof(GpuFrame, anchor_hi) == 352 && offsetof(GpuFrame, previou
 static_assert(offsetof(GpuFrame, reuse) == 576 && offsetof(GpuFrame, jitter) == 592 && sizeof(GpuFrame) == 608);
 static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
 static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
-static_assert(offsetof(GpuScene, exposure) == 192 && sizeof(GpuScene) == 208);
+static_assert(offsetof(GpuScene, exposure) == 192 && offsetof(GpuScene, auxiliary_light) == 208 && sizeof(GpuScene) == 336);
 }  // namespace fg
 #endif

@@ -54,8 +54,32 @@ struct FgShading {
     FgSurface surface;   // the graph's outputs it came from
 };
 
+#ifdef FG_HAS_LIGHTS
+// What auxiliary light i adds at the hit p seen along rd: the graph's diffuse, shadow and
+// specular evaluated towards it; a point light's falls off with the square of its distance.
+vec3 fg_auxiliary_light(uint i, vec3 p, vec3 rd, vec3 n, vec3 albedo)
+{
+    vec4 light = fg_scene.auxiliary_light[i];
+    vec3 radiance = fg_scene.auxiliary_color[i].rgb;
+    vec3 towards = light.xyz;
+    float distance = FG_DIRECTIONAL_LIGHT_DISTANCE;
+    if (light.w > 0.5) {
+#ifdef FG_DOUBLE_SCENE
+        vec3 offset = vec3(dvec3(light.xyz) - fg_anchor()) - p;
+#else
+        vec3 offset = light.xyz - p;
+#endif
+        distance = max(length(offset), 1e-20);
+        towards = offset / distance;
+        radiance /= distance * distance;
+    }
+    FgLightTerms l = fg_scene_light_terms(p, -rd, n, towards, distance);
+    return radiance * (albedo * l.diffuse + l.specular) * l.shadow;
+}
+#endif
+
 // Shades the hit p seen along rd with normal n by its direct terms: the graph's surface outputs,
-// the light, fake lighting, emission; no mirror bounce.
+// the lights, fake lighting, emission; no mirror bounce.
 FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n)
 {
     FgSurface s = fg_scene_surface(p, -rd, n);
@@ -85,6 +109,9 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n)
     // by the specular lobe.
     vec3 color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse * shadow) +
                  fg_scene.light_color.rgb * specular * shadow;
+#ifdef FG_HAS_LIGHTS
+    for (uint i = 0u; i < fg_scene.auxiliary_lights; i++) color += fg_auxiliary_light(i, p, rd, n, s.albedo);
+#endif
 #ifdef FG_HAS_SSS
     color += s.sss * fg_scene.sss_color.rgb * s.albedo;
 #endif
