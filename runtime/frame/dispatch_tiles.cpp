@@ -98,4 +98,15 @@ std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, 
     return tiles;
 }
 
+std::size_t SampledTiles::count() const { return static_cast<std::size_t>(std::count(active.begin(), active.end(), 1)); }
+
+void keep_sampled_tiles(std::vector<std::uint32_t>& tiles, const SampledTiles& sampled) {
+    std::erase_if(tiles, [&](std::uint32_t t) {
+        const std::uint32_t x = t & 0xffffu, y = t >> 16;
+        return t == kNoTile || x >= sampled.columns || y >= sampled.rows || !sampled.takes(x, y);
+    });
+    auto groups = tile_dispatch_groups(tiles.size());
+    tiles.resize(std::size_t(groups[0]) * groups[1], kNoTile);
+}
+
 }  // namespace fg

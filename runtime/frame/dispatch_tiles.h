@@ -44,6 +44,22 @@ std::array<std::uint32_t, 3> tile_dispatch_groups(std::size_t tiles);
 std::vector<std::uint32_t> list_dispatch_tiles(const GpuFrame& frame, int view, TileRegion region,
                                                OutsideLens outside = OutsideLens::Listed);
 
+// The 8x8-pixel tiles of an eye's full-resolution grid that still take samples (adaptive sampling:
+// a tile whose pixels have converged is left out of the eye's full-resolution passes).
+struct SampledTiles {
+    std::uint32_t columns = 0, rows = 0;     // tiles across and down: the eye's size / 8, rounded up
+    std::vector<std::uint8_t> active;        // 1: the tile takes the next sample; row by row
+    SampledTiles() = default;
+    SampledTiles(std::uint32_t width, std::uint32_t height)
+        : columns((width + 7) / 8), rows((height + 7) / 8), active(std::size_t(columns) * rows, 1) {}
+    bool takes(std::uint32_t tile_x, std::uint32_t tile_y) const { return active[std::size_t(tile_y) * columns + tile_x] != 0; }
+    std::size_t count() const;
+};
+
+// A list of full-resolution tiles (TileRegion::Whole or Fovea) without the tiles `sampled` leaves
+// out, padded again to whole rows.
+void keep_sampled_tiles(std::vector<std::uint32_t>& tiles, const SampledTiles& sampled);
+
 // How many entries a list of the region's grid has at most, padding included (the buffer that holds it).
 std::uint32_t dispatch_tile_capacity(std::uint32_t width, std::uint32_t height, TileRegion region);
 

@@ -368,6 +368,11 @@ void FrameExecutor::forget_history() {
     frame_->flush();
 }
 
+void FrameExecutor::set_sampled_tiles(int view, std::optional<SampledTiles> sampled) {
+    sampled_tiles_.at(static_cast<std::size_t>(view)) = std::move(sampled);
+    ++sampled_version_;
+}
+
 void FrameExecutor::update_tile_lists() {
     for (const auto& b : graph_.buffers()) {
         if (!b.tiles) continue;
@@ -384,10 +389,13 @@ void FrameExecutor::update_tile_lists() {
             list.outside_left = false;
         } else if (!list.outside_left && frames_run_ >= list.placed_at + frames_to_fill_) {
             list.outside_left = true;
-        } else {
+        } else if (list.sampled_version == sampled_version_) {
             continue;
         }
+        list.sampled_version = sampled_version_;
         list.tiles = list_dispatch_tiles(frame_data_, view, region, list.outside_left ? OutsideLens::Left : OutsideLens::Listed);
+        const auto& sampled = sampled_tiles_[static_cast<std::size_t>(view)];
+        if (sampled && (region == TileRegion::Whole || region == TileRegion::Fovea)) keep_sampled_tiles(list.tiles, *sampled);
         if (list.tiles.size() * 4 > b.size)
             throw std::logic_error(fmt::format("{} tiles for {}, which holds {}", list.tiles.size(), b.name, b.size / 4));
         list.written = false;

@@ -4,9 +4,11 @@
 // declares (two of each history image), binds each pass's resources by name, checks every binding
 // and push constant against the shader's reflection, and records the graph's batches with a
 // barrier between one batch and the next, and timestamps.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,9 @@ public:
     // The frame's uniforms; the executor adds the previous frame's eyes and whether its levels hold
     // for this one (cross-frame reuse).
     void set_frame(const GpuFrame& frame);
+    // Adaptive sampling: the eye's full-resolution passes run only on the tiles `sampled` keeps
+    // (nullopt: all of them) from the next frame on; the other pixels keep what they held.
+    void set_sampled_tiles(int view, std::optional<SampledTiles> sampled);
     // The uniforms of the last frame set, as the shaders see them.
     const GpuFrame& frame() const { return frame_data_; }
     // A changed scene setting (light, background...) forgets the shading history.
@@ -127,12 +132,15 @@ private:
         std::uint64_t placed_at = 0;        // the frame it was placed for
         bool placed = false;
         bool outside_left = false;          // the tiles outside the lens are left out
+        std::uint64_t sampled_version = 0;  // the sampled tiles it holds (sampled_version_)
         std::vector<std::uint32_t> tiles;
         bool written = false;
     };
     std::uint64_t frames_to_fill_ = 1;
     void update_tile_lists();
     std::map<std::string, TileList> tile_lists_;   // by buffer name
+    std::array<std::optional<SampledTiles>, 3> sampled_tiles_;   // by view
+    std::uint64_t sampled_version_ = 0;            // counts set_sampled_tiles
     std::unique_ptr<vk::Buffer> no_tiles_;         // bound where a pass dispatches no tiles
 };
 

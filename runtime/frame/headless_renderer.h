@@ -37,6 +37,12 @@ public:
     FrameStats run(const HeadPose& head, double time, std::uint32_t frame_index = 0);
     // The sub-pixel offset of both eyes' pixel grids from the next frame on (StereoSettings::jitter).
     void set_jitter(glm::dvec2 pixels) { stereo_.jitter = pixels; }
+    // Adaptive sampling: from the next frame on, each eye marches and shades only the tiles its
+    // `sampled` keeps (nullptr: all); its other pixels keep what they held. Needs tile dispatch.
+    void set_sampled_tiles(const SampledTiles* left, const SampledTiles* right) {
+        executor_->set_sampled_tiles(FG_VIEW_LEFT, left ? std::optional(*left) : std::nullopt);
+        executor_->set_sampled_tiles(FG_VIEW_RIGHT, right ? std::optional(*right) : std::nullopt);
+    }
     // Depth of field for jittered samples (render_samples): a thin lens of `aperture` (its diameter,
     // scene units; 0: a pinhole) focused `focus` scene units ahead.
     void set_depth_of_field(double aperture, double focus) {

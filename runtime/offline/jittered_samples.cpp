@@ -28,38 +28,73 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const HeadPose& head, d
 
 RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<SampleMoment(double)>& moment,
                              std::uint32_t frame_index, std::uint32_t samples) {
+    SampleBudget budget;
+    budget.samples = samples;
+    return render_samples(renderer, moment, frame_index, budget);
+}
+
+RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<SampleMoment(double)>& moment,
+                             std::uint32_t frame_index, const SampleBudget& budget) {
+    const std::uint32_t samples = budget.samples;
     if (samples <= 1) {
         const SampleMoment m = moment(0.0);
         return renderer.render(m.head, m.time, frame_index);
     }
     if (renderer.graph().taa) throw std::invalid_argument("jittered samples of a frame with temporal anti-aliasing");
+    const bool adaptive = budget.noise > 0.0;
+    if (adaptive && !renderer.graph().tile_dispatch)
+        throw std::invalid_argument("adaptive sampling needs tile dispatch (the pack's shaders and FrameSettings::tile_dispatch)");
     RenderedFrame first;
     SampleAccumulator left, right;
+    std::optional<SampledTiles> sampled_left, sampled_right;   // none: every tile
     std::vector<float> beauty_left, beauty_right;
     const std::vector<glm::dvec2> pattern = sample_pattern(samples);
     const std::vector<glm::dvec2> lens = lens_pattern(samples);
     const std::vector<double> shutter = shutter_pattern(samples);
+    const std::uint32_t width = renderer.graph().output_width;
     for (std::uint32_t k = 0; k < samples; ++k) {
         renderer.set_jitter(pattern[k]);
         if (renderer.aperture() > 0.0) renderer.set_lens(lens[k] * (0.5 * renderer.aperture()));
         const SampleMoment m = moment(shutter[k]);
         RenderedFrame r = renderer.render(m.head, m.time, frame_index);
-        left.add(r.left);
-        if (!r.right.pixels.empty()) right.add(r.right);
-        if (!r.aovs_left.empty()) add_beauty(beauty_left, r.aovs_left);
-        if (!r.aovs_right.empty()) add_beauty(beauty_right, r.aovs_right);
+        const SampledTiles* l = sampled_left ? &*sampled_left : nullptr;
+        const SampledTiles* rt = sampled_right ? &*sampled_right : nullptr;
+        left.add(r.left, l);
+        if (!r.right.pixels.empty()) right.add(r.right, rt);
+        if (!r.aovs_left.empty()) add_beauty(beauty_left, r.aovs_left, l, width);
+        if (!r.aovs_right.empty()) add_beauty(beauty_right, r.aovs_right, rt, width);
         if (k == 0) {
             first = std::move(r);
         } else {
             add_stats(first.stats, r.stats);
         }
+        SampleProgress progress{k + 1, samples};
+        if (adaptive && k + 1 >= std::max(budget.min_samples, 2u)) {
+            sampled_left = left.tiles_above(budget.noise);
+            if (right.samples() > 0) sampled_right = right.tiles_above(budget.noise);
+            const std::size_t tiles = sampled_left->active.size() * (sampled_right ? 2 : 1);
+            const std::size_t sampling = sampled_left->count() + (sampled_right ? sampled_right->count() : 0);
+            progress.tiles_sampling = static_cast<double>(sampling) / static_cast<double>(tiles);
+            for (const SampleAccumulator* eye : {&left, &right})
+                for (std::size_t p = 0; p < eye->counts().size(); ++p) progress.noisy_pixels += eye->noise(p) > budget.noise;
+            renderer.set_sampled_tiles(&*sampled_left, sampled_right ? &*sampled_right : nullptr);
+        }
+        std::uint64_t taken = 0, pixels = 0;
+        for (const SampleAccumulator* eye : {&left, &right}) {
+            for (std::uint32_t c : eye->counts()) taken += c;
+            pixels += eye->counts().size();
+        }
+        progress.mean_samples = static_cast<double>(taken) / static_cast<double>(std::max<std::uint64_t>(pixels, 1));
+        if (budget.progress) budget.progress(progress);
+        if (adaptive && progress.tiles_sampling == 0.0) break;
     }
     renderer.set_jitter(glm::dvec2(0.0));
     renderer.set_lens(glm::dvec2(0.0));
+    renderer.set_sampled_tiles(nullptr, nullptr);
     first.left = left.mean();
     if (right.samples() > 0) first.right = right.mean();
-    if (!beauty_left.empty()) mean_beauty(first.aovs_left, beauty_left, samples);
-    if (!beauty_right.empty()) mean_beauty(first.aovs_right, beauty_right, samples);
+    if (!beauty_left.empty()) mean_beauty(first.aovs_left, beauty_left, left.counts());
+    if (!beauty_right.empty()) mean_beauty(first.aovs_right, beauty_right, right.counts());
     return first;
 }
 

@@ -81,16 +81,23 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
     return out;
 }
 
-void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs) {
+void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs, const SampledTiles* sampled,
+                std::uint32_t width) {
     const std::vector<std::byte>& beauty = aovs.at(beauty_index());
     sum.resize(beauty.size() / 2, 0.0f);
-    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += half_at(beauty, i);
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+        const std::size_t pixel = i / 4;
+        if (sampled && !sampled->takes(static_cast<std::uint32_t>(pixel % width / 8), static_cast<std::uint32_t>(pixel / width / 8)))
+            continue;
+        sum[i] += half_at(beauty, i);
+    }
 }
 
-void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum, std::uint32_t samples) {
+void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum,
+                 const std::vector<std::uint32_t>& counts) {
     std::vector<std::byte>& beauty = aovs.at(beauty_index());
     for (std::size_t i = 0; i < sum.size() && 2 * i < beauty.size(); ++i) {
-        Imath::half h(sum[i] / static_cast<float>(samples));
+        Imath::half h(sum[i] / static_cast<float>(std::max<std::uint32_t>(counts.at(i / 4), 1)));
         std::memcpy(beauty.data() + 2 * i, &h, 2);
     }
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "exr_frame.h"
+#include "frame/dispatch_tiles.h"
 #include "frame/image_output.h"
 
 namespace fg {
@@ -33,10 +34,13 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
                                                      std::uint32_t width, std::uint32_t height, std::uint32_t factor);
 
 // Jittered samples of one eye (sample_accumulator.h): add_beauty sums each sample's beauty in
-// float; mean_beauty writes the mean into the first sample's AOVs, whose other passes stay its
+// float, over the tiles `sampled` keeps (all without; `width`: the eye's); mean_beauty writes the
+// mean of each pixel's `counts` samples into the first sample's AOVs, whose other passes stay its
 // own, as downsample_aovs keeps a central sample's.
-void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs);
-void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum, std::uint32_t samples);
+void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs, const SampledTiles* sampled,
+                std::uint32_t width);
+void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum,
+                 const std::vector<std::uint32_t>& counts);
 
 // The beauty tone mapped as the frame's own tone map does it (ACES fit; the beauty carries the
 // exposure), in 16 bits per channel; eyes side by side, or top-bottom for ODS (`stacked`).

@@ -120,7 +120,11 @@ OfflineFrame PathRenderer::render_frame(int frame) {
         move_to(m);
         return SampleMoment{m.head, m.time};
     };
-    RenderedFrame r = render_samples(*renderer_, moment, static_cast<std::uint32_t>(frame), settings_.samples);
+    SampleBudget budget;
+    budget.samples = settings_.samples;
+    budget.noise = settings_.noise;
+    budget.min_samples = settings_.min_samples;
+    RenderedFrame r = render_samples(*renderer_, moment, static_cast<std::uint32_t>(frame), budget);
     std::uint64_t evaluations = 0;
     for (const auto& [_, n] : r.stats.evaluations) evaluations += n;
     double samples = (is_mono(settings_.projection) ? 1.0 : 2.0) * settings_.width * settings_.height *

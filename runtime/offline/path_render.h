@@ -21,6 +21,8 @@ struct PathRenderSettings {
     std::uint32_t width = 512, height = 256;  // output size per eye
     std::uint32_t supersample = 1;            // samples per output pixel along each axis
     std::uint32_t samples = 1;                // jittered frames averaged per frame (perspective)
+    double noise = 0.0;                       // adaptive sampling's noise target (SampleBudget)
+    std::uint32_t min_samples = 16;
     double detail = 1.0;                      // the hit threshold is 1 / detail of an output pixel
     bool taa = false;                         // temporal anti-aliasing, history from frame to frame
     double taa_upscale = 1.0;                 // with taa: temporal upsampling (marched at 1/this per axis)

@@ -13,8 +13,8 @@ std::string clock_text(double seconds) {
 }
 }  // namespace
 
-ProgressBar::ProgressBar(int total, std::FILE* out)
-    : total_(total), out_(out), terminal_(::isatty(::fileno(out)) != 0), start_(std::chrono::steady_clock::now()),
+ProgressBar::ProgressBar(int total, std::FILE* out, std::string unit)
+    : total_(total), unit_(std::move(unit)), out_(out), terminal_(::isatty(::fileno(out)) != 0), start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {
     draw(true);
 }
@@ -39,9 +39,11 @@ void ProgressBar::draw(bool force) {
     int filled = total_ > 0 ? kWidth * done_ / total_ : kWidth;
     double fps = frames_per_second();
     std::string left = rendered_ > 0 ? clock_text((total_ - done_) / fps) : "?";
-    std::string line = fmt::format("[{}{}] {}/{} frames, {:.2f} fps, {} left{}", std::string(filled, '#'),
-                                   std::string(kWidth - filled, '.'), done_, total_, fps, left,
-                                   skipped_ > 0 ? fmt::format(" ({} already done)", skipped_) : "");
+    std::string line = fmt::format("[{}{}] {}/{} {}, {:.2f} {}, {} left{}{}", std::string(filled, '#'),
+                                   std::string(kWidth - filled, '.'), done_, total_, unit_, fps,
+                                   unit_ == "frames" ? "fps" : unit_ + "/s", left,
+                                   skipped_ > 0 ? fmt::format(" ({} already done)", skipped_) : "",
+                                   note_.empty() ? "" : ", " + note_);
     if (terminal_) fmt::print(out_, "\r{}\x1b[K", line);
     else fmt::print(out_, "{}\n", line);
     std::fflush(out_);

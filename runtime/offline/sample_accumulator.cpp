@@ -1,32 +1,74 @@
 #include "sample_accumulator.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "linear_light.h"
 
 namespace fg {
 
-void SampleAccumulator::add(const Rgba8Image& sample) {
+void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sampled) {
     if (samples_ == 0) {
         width_ = sample.width;
         height_ = sample.height;
-        sum_.assign(static_cast<std::size_t>(width_) * height_ * 4, 0.0f);
+        const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
+        sum_.assign(pixels * 4, 0.0f);
+        counts_.assign(pixels, 0);
+        luma_.assign(pixels, 0.0);
+        luma_squared_.assign(pixels, 0.0);
     } else if (sample.width != width_ || sample.height != height_) {
         throw std::invalid_argument("a sample's size differs from the first sample's");
     }
     const auto& lin = srgb8_linear_table();
-    for (std::size_t i = 0; i < sum_.size(); ++i)
-        sum_[i] += i % 4 == 3 ? sample.pixels[i] : static_cast<float>(lin[sample.pixels[i]]);
+    for (std::uint32_t y = 0; y < height_; ++y)
+        for (std::uint32_t x = 0; x < width_; ++x) {
+            if (sampled && !sampled->takes(x / 8, y / 8)) continue;
+            const std::size_t p = static_cast<std::size_t>(y) * width_ + x;
+            const std::uint8_t* c = &sample.pixels[4 * p];
+            for (int k = 0; k < 3; ++k) sum_[4 * p + k] += static_cast<float>(lin[c[k]]);
+            sum_[4 * p + 3] += c[3];
+            // Rec. 709 weights on the encoded values: a display luma.
+            const double luma = (0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]) / 255.0;
+            luma_[p] += luma;
+            luma_squared_[p] += luma * luma;
+            ++counts_[p];
+        }
     ++samples_;
 }
 
 Rgba8Image SampleAccumulator::mean() const {
     Rgba8Image out{width_, height_, std::vector<std::uint8_t>(sum_.size())};
-    const double n = samples_;
-    for (std::size_t i = 0; i < sum_.size(); ++i)
+    for (std::size_t i = 0; i < sum_.size(); ++i) {
+        const double n = std::max<std::uint32_t>(counts_[i / 4], 1);
         out.pixels[i] = i % 4 == 3 ? static_cast<std::uint8_t>(std::lround(sum_[i] / n)) : linear_to_srgb8(sum_[i] / n);
+    }
     return out;
+}
+
+double SampleAccumulator::noise(std::size_t pixel) const {
+    const double n = counts_[pixel];
+    if (n < 2.0) return std::numeric_limits<double>::infinity();
+    const double mean = luma_[pixel] / n;
+    const double variance = std::max(luma_squared_[pixel] / n - mean * mean, 0.0) * n / (n - 1.0);
+    return std::sqrt(variance / n);
+}
+
+SampledTiles SampleAccumulator::tiles_above(double target) const {
+    SampledTiles noisy(width_, height_);
+    std::fill(noisy.active.begin(), noisy.active.end(), 0);
+    for (std::uint32_t y = 0; y < height_; ++y)
+        for (std::uint32_t x = 0; x < width_; ++x)
+            if (noise(static_cast<std::size_t>(y) * width_ + x) > target) noisy.active[std::size_t(y / 8) * noisy.columns + x / 8] = 1;
+    SampledTiles grown = noisy;
+    for (std::uint32_t ty = 0; ty < noisy.rows; ++ty)
+        for (std::uint32_t tx = 0; tx < noisy.columns; ++tx) {
+            if (!noisy.takes(tx, ty)) continue;
+            for (std::uint32_t ny = ty > 0 ? ty - 1 : 0; ny <= std::min(ty + 1, noisy.rows - 1); ++ny)
+                for (std::uint32_t nx = tx > 0 ? tx - 1 : 0; nx <= std::min(tx + 1, noisy.columns - 1); ++nx)
+                    grown.active[std::size_t(ny) * grown.columns + nx] = 1;
+        }
+    return grown;
 }
 
 }  // namespace fg

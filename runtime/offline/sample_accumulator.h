@@ -3,24 +3,39 @@
 // sub-pixel offset (frame/sample_jitter.h); their mean in linear light is the picture of that many
 // samples per pixel, at the output's size and detail, in the memory of one frame (supersampling
 // renders factor^2 times the pixels at once). Deterministic: the same samples give the same bytes.
+//
+// Adaptive sampling adds a sample only to the tiles still sampling (SampledTiles), so each pixel
+// keeps its own count; a pixel's noise is the standard error of its mean, estimated from the
+// spread of its samples' display values (sRGB-encoded luma, 0 to 1: what the eye sees as grain).
 #include <cstdint>
 #include <vector>
 
+#include "frame/dispatch_tiles.h"
 #include "frame/image_output.h"
 
 namespace fg {
 
 class SampleAccumulator {
 public:
-    // Adds one sample; every sample has the first one's size (std::invalid_argument otherwise).
-    void add(const Rgba8Image& sample);
+    // Adds one sample, to the pixels of the tiles `sampled` keeps (all without); every sample has
+    // the first one's size (std::invalid_argument otherwise).
+    void add(const Rgba8Image& sample, const SampledTiles* sampled = nullptr);
     std::uint32_t samples() const { return samples_; }
     // The mean so far, sRGB-encoded; an empty image before the first sample.
     Rgba8Image mean() const;
+    // Samples each pixel took, row by row.
+    const std::vector<std::uint32_t>& counts() const { return counts_; }
+    // The standard error of pixel i's mean in display units (infinite below two samples).
+    double noise(std::size_t pixel) const;
+    // The tiles with a pixel whose noise is above `target`, or whose neighbour tile has one (a
+    // tile's edge pixels blend with the next tile's when they are shown side by side).
+    SampledTiles tiles_above(double target) const;
 
 private:
     std::uint32_t width_ = 0, height_ = 0, samples_ = 0;
-    std::vector<float> sum_;   // linear RGB and alpha per pixel
+    std::vector<float> sum_;                 // linear RGB and alpha per pixel
+    std::vector<std::uint32_t> counts_;      // samples per pixel
+    std::vector<double> luma_, luma_squared_;   // sums of the display luma and its square
 };
 
 }  // namespace fg

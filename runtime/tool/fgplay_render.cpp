@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include "graph/scene_settings.h"
 #include "offline/depth_of_field.h"
 #include "offline/jittered_samples.h"
+#include "offline/progress_bar.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
 
@@ -66,6 +68,11 @@ int render(const RenderOptions& o) {
                                "for a smooth blur), without --taa\n");
             return 2;
         }
+        if (o.noise > 0.0 && (o.samples < 2 || o.whole_dispatch)) {
+            fmt::print(stderr, "fgplay: --noise stops converged pixels short of --samples N: add --samples N (the most a "
+                               "pixel takes), without --whole-dispatch\n");
+            return 2;
+        }
         if (o.taa && o.samples > 1) {
             fmt::print(stderr, "fgplay: --taa and --samples both jitter the rays: choose one\n");
             return 2;
@@ -97,7 +104,24 @@ int render(const RenderOptions& o) {
                 fmt::print("depth of field: a lens {:g} wide focused {:.4g} ahead{}\n", o.aperture, focus,
                            o.focus > 0.0 ? "" : " (at the view's centre)");
             }
-            RenderedFrame r = render_samples(renderer, head, time, static_cast<std::uint32_t>(f), o.samples);
+            SampleBudget budget;
+            budget.samples = o.samples;
+            budget.noise = o.noise;
+            budget.min_samples = o.min_samples;
+            std::optional<ProgressBar> bar;
+            if (o.samples > 1 && o.progress) bar.emplace(static_cast<int>(o.samples), stderr, "samples");
+            double mean_samples = o.samples;
+            budget.progress = [&](const SampleProgress& p) {
+                mean_samples = p.mean_samples;
+                if (!bar) return;
+                if (o.noise > 0.0)
+                    bar->set_note(fmt::format("{:.0f} % of tiles sampling, {} pixels above the noise target, {:.1f} samples a pixel",
+                                              100.0 * p.tiles_sampling, p.noisy_pixels, p.mean_samples));
+                bar->advance(false);
+            };
+            RenderedFrame r = render_samples(renderer, [&](double) { return SampleMoment{head, time}; },
+                                             static_cast<std::uint32_t>(f), budget);
+            if (bar) bar->finish();
             std::string suffix = o.frames > 1 ? fmt::format("_{:04}", f) : "";
             auto path = [&](const std::string& name) { return (std::filesystem::path(o.out) / (name + suffix + ".png")).string(); };
             write_png(path("left"), r.left);
@@ -120,6 +144,7 @@ int render(const RenderOptions& o) {
                 return list;
             };
             std::string samples = o.samples > 1 ? fmt::format(", {} samples summed", o.samples) : "";
+            if (o.noise > 0.0) samples = fmt::format(", {:.1f} samples a pixel (at most {}, noise target {:g})", mean_samples, o.samples, o.noise);
             if (renderer.graph().output_width != renderer.graph().width)
                 samples += fmt::format(", marched at {}x{}", renderer.graph().width, renderer.graph().height);
             fmt::print("frame {}: {} stereo {}x{} per eye{}; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height, samples,

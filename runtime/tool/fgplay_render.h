@@ -27,6 +27,8 @@ struct RenderOptions {
     Projection projection = Projection::Perspective;
     std::uint32_t supersample = 1;
     std::uint32_t samples = 1;       // jittered frames averaged per picture (offline/jittered_samples.h)
+    double noise = 0.0;              // adaptive sampling: a pixel's noise target (0: every pixel every sample)
+    std::uint32_t min_samples = 16;  // ... taken before a pixel may stop
     double detail = 1.0;             // the hit threshold and normal taps: 1 / detail of an output pixel
     bool taa = false;                // temporal anti-aliasing (with --frames or --path: history carried)
     double taa_upscale = 1.0;        // temporal upsampling: marched at 1/this of the size per axis

@@ -58,6 +58,8 @@ int render_path(const RenderOptions& o) {
     s.height = o.height;
     s.supersample = o.supersample;
     s.samples = o.samples;
+    s.noise = o.noise;
+    s.min_samples = o.min_samples;
     s.detail = o.detail;
     s.taa = o.taa;
     s.taa_upscale = o.taa_upscale;

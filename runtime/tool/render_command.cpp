@@ -29,6 +29,14 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
                        "samples in the memory of one frame")
         ->capture_default_str()
         ->check(CLI::Range(1u, kMaxSamples));
+    render->add_option("--noise", r.noise,
+                       "adaptive sampling (with --samples N, the most a pixel takes): a pixel stops once the noise of its "
+                       "mean is below this, in display units (0.004 is one step of an 8-bit value); the march and the "
+                       "shading then skip its 8x8 tile")
+        ->check(CLI::Range(0.0, 1.0));
+    render->add_option("--min-samples", r.min_samples, "with --noise: samples every pixel takes before it may stop")
+        ->capture_default_str()
+        ->check(CLI::Range(2u, kMaxSamples));
     render->add_option("--detail", r.detail,
                        "detail level: the hit threshold and normal taps are 1/D of an output pixel, at any sampling "
                        "(2: finer detail, slower; 0.5: coarser, faster)")
@@ -62,7 +70,7 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_option("--exr-compression", c.compression, "with --format exr: zip | piz | none")->capture_default_str();
     render->add_option("--shard", r.shard, "with --path: I/N, render shard I of N of the frame range (a job array's index)");
     render->add_flag("--resume", r.resume, "with --path: skip frames already on disk and verified");
-    render->add_flag("!--no-progress", r.progress, "with --path: no progress bar on stderr");
+    render->add_flag("!--no-progress", r.progress, "no progress bar on stderr (paths, and stills of --samples N)");
     render->add_option("--time", r.time, "scene time in seconds of the first frame");
     render->add_option("--knob", c.knobs, "override an accuracy knob: name=value (fgc info lists them)");
     render->add_flag("--describe", r.describe, "print the frame graph: passes, images, sizes");

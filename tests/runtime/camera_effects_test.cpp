@@ -2,7 +2,8 @@
 // offline/depth_of_field.h): an edge at the focus distance stays sharp (inside one pixel), and one
 // at twice the focus distance blurs by the circle of confusion, aperture * (1/focus - 1/distance)
 // across, within 10 %. Motion blur (a camera path's shutter): an edge blurs by the camera's motion
-// while the shutter is open, within 10 %.
+// while the shutter is open, within 10 %. Adaptive sampling: pixels whose mean has converged stop
+// (their tiles leave the passes), the rest take every sample, and the picture stays the uniform one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "offline/linear_light.h"
 #include "offline/jittered_samples.h"
 #include "offline/path_render.h"
+#include "offline/sample_accumulator.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -82,16 +84,24 @@ double disc_edge_width() {
     return solve(0.9) - solve(0.1);
 }
 
-Rgba8Image blurred(double distance) {
+RenderedFrame blurred_frame(double distance, const SampleBudget& budget, bool count_evaluations = false) {
     Pack pack = wall_at(distance);
     FrameSettings fs;
     fs.width = fs.height = kSize;
     fs.stereo = StereoMode::Naive;
+    fs.count_evaluations = count_evaluations;
     StereoSettings stereo{kSize, kSize};
     stereo.ipd_m = 0.0;
     HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
     focus_depth_of_field(r, kAperture, kFocus, r.scene_camera(), 0.0, 0);
-    return render_samples(r, r.scene_camera(), 0.0, 0, 64).left;
+    const HeadPose head = r.scene_camera();
+    return render_samples(r, [&](double) { return SampleMoment{head, 0.0}; }, 0, budget);
+}
+
+Rgba8Image blurred(double distance) {
+    SampleBudget uniform;
+    uniform.samples = 64;
+    return blurred_frame(distance, uniform).left;
 }
 
 class DepthOfField : public RuntimeTest {};
@@ -162,4 +172,58 @@ TEST_F(MotionBlur, a_camera_moving_while_the_shutter_is_open_blurs_an_edge_by_it
     RecordProperty("figures", figures);
     std::printf("%s\n", figures.c_str());
     EXPECT_NEAR(measured, expected, 0.1 * expected) << figures;
+}
+
+TEST(AdaptiveSampling, a_pixel_noise_is_the_standard_error_of_its_mean_and_noisy_tiles_keep_their_neighbours) {
+    // 24x16 pixels (3x2 tiles): pixel (3, 3) alternates between black and white, the rest stay grey.
+    SampleAccumulator acc;
+    SampledTiles all(24, 16);
+    for (int k = 0; k < 4; ++k) {
+        Rgba8Image sample{24, 16, std::vector<std::uint8_t>(24 * 16 * 4, 128)};
+        for (int c = 0; c < 3; ++c) sample.pixels[4 * (3 * 24 + 3) + c] = k % 2 ? 255 : 0;
+        acc.add(sample, &all);
+    }
+    // Luma 0, 1, 0, 1: the sample variance 1/3, the mean's standard error sqrt(1/3 / 4).
+    EXPECT_NEAR(acc.noise(3 * 24 + 3), std::sqrt(1.0 / 12.0), 1e-9);
+    EXPECT_EQ(acc.noise(0), 0.0);
+    SampledTiles noisy = acc.tiles_above(0.01);
+    // The noisy tile (0, 0) and the tiles around it: (1, 0), (0, 1), (1, 1); not (2, *).
+    EXPECT_EQ(noisy.active, (std::vector<std::uint8_t>{1, 1, 0, 1, 1, 0}));
+    // The next sample goes to those tiles alone: their pixels count 5, the others 4.
+    acc.add(Rgba8Image{24, 16, std::vector<std::uint8_t>(24 * 16 * 4, 128)}, &noisy);
+    EXPECT_EQ(acc.counts()[0], 5u);
+    EXPECT_EQ(acc.counts()[23], 4u);
+    EXPECT_EQ(acc.mean().pixels[4 * 23], 128) << "a pixel's mean divides by its own count";
+}
+
+TEST_F(DepthOfField, adaptive_sampling_stops_converged_pixels_and_keeps_the_uniform_picture) {
+    // The blurred edge twice the focus away: noisy across its circle of confusion, flat either side.
+    SampleBudget uniform;
+    uniform.samples = 64;
+    SampleBudget adaptive = uniform;
+    adaptive.noise = 0.01;
+    adaptive.min_samples = 8;
+    SampleProgress last;
+    adaptive.progress = [&](const SampleProgress& p) { last = p; };
+    const RenderedFrame all = blurred_frame(2.0 * kFocus, uniform, true);
+    const RenderedFrame some = blurred_frame(2.0 * kFocus, adaptive, true);
+    double evaluations_all = 0.0, evaluations_some = 0.0;
+    for (const auto& [_, n] : all.stats.evaluations) evaluations_all += static_cast<double>(n);
+    for (const auto& [_, n] : some.stats.evaluations) evaluations_some += static_cast<double>(n);
+    const auto& lin = srgb8_linear_table();
+    double worst = 0.0;
+    for (std::size_t i = 0; i < all.left.pixels.size(); ++i)
+        if (i % 4 != 3) worst = std::max(worst, std::abs(lin[all.left.pixels[i]] - lin[some.left.pixels[i]]));
+    const double width_all = edge_width(all.left), width_some = edge_width(some.left);
+    std::string figures = fmt::format("{:.1f} samples a pixel of 64 ({:.0f} % of the tiles still sampling at the end), {:.0f} % of "
+                                      "the evaluations; edge 10-90 % {:.2f} px against {:.2f}; pixels at most {:.4f} apart in "
+                                      "linear light",
+                                      last.mean_samples, 100.0 * last.tiles_sampling, 100.0 * evaluations_some / evaluations_all,
+                                      width_some, width_all, worst);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_LT(last.mean_samples, 0.6 * 64) << figures;
+    EXPECT_LT(evaluations_some, 0.7 * evaluations_all) << figures;
+    EXPECT_NEAR(width_some, width_all, 0.05 * width_all) << figures;
+    EXPECT_LE(worst, 0.01) << figures;
 }
