@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Renders a thumbnail of every gallery scene (graphs/gallery/*.json) into docs/images/gallery/ and
 # rewrites docs/gallery.md from the graphs' names and descriptions. Headless, on lavapipe without a GPU.
-#   bash scripts/gallery_thumbnails.sh [size] [--full]
+#   bash scripts/gallery_thumbnails.sh [size] [--full | --page]
 #     size     thumbnail size, default 256 (one eye, size x size)
+#     --page   only rewrite docs/gallery.md from the pictures already there
 #     --full   also render the full-size offline pictures listed in OFFLINE below (minutes each),
 #              timing each render; without it the page reuses the pictures and times already in
 #              docs/images/gallery/ (NAME_full.png and NAME_full.time)
@@ -14,9 +15,11 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=${FG_BUILD_DIR:-$ROOT/build}
 SIZE=256
 FULL=0
+PAGE_ONLY=0
 for arg in "$@"; do
   case "$arg" in
     --full) FULL=1 ;;
+    --page) PAGE_ONLY=1 ;;
     *) SIZE=$arg ;;
   esac
 done
@@ -35,10 +38,11 @@ mandelbox_halls --size 960x540 --samples 9
 mandelbulb_dof --size 960x540 --samples 64 --aperture 0.1 --focus 1.2
 '
 
+mkdir -p "$IMAGES"
+if [ "$PAGE_ONLY" = 0 ]; then
 for tool in "$FGC" "$FGPLAY"; do
   [ -x "$tool" ] || { echo "missing $tool: build first (bash scripts/fractograph.sh build)"; exit 1; }
 done
-mkdir -p "$IMAGES"
 
 for graph in "$ROOT"/graphs/gallery/*.json; do
   name=$(basename "$graph" .json)
@@ -58,8 +62,11 @@ if [ "$FULL" = 1 ]; then
       "$FGPLAY" render "$WORK/$name.fgpack" --out "$WORK/$name-full" $options >/dev/null
     cp "$WORK/$name-full/left.png" "$IMAGES/${name}_full.png"
     read -r wall user sys <"$WORK/$name.time"
-    printf '%s %s %s %s\n' "$wall" "$(echo "$user + $sys" | bc)" "$(nproc)" "$(date -u +%Y-%m-%d)" >"$IMAGES/${name}_full.time"
+    # wall s, CPU s, cores, date, the 5-minute load average at the end (other jobs stretch the wall time)
+    printf '%s %s %s %s %s\n' "$wall" "$(echo "$user + $sys" | bc)" "$(nproc)" "$(date -u +%Y-%m-%d)" \
+      "$(cut -d' ' -f2 /proc/loadavg)" >"$IMAGES/${name}_full.time"
   done <<<"$OFFLINE"
+fi
 fi
 
 # The page: one section per scene, in file order, from the graph's own name and description.
@@ -101,14 +108,16 @@ for path, g in graphs:
     picture = root / "docs" / "images" / "gallery" / f"{stem}_full.png"
     timing = root / "docs" / "images" / "gallery" / f"{stem}_full.time"
     if stem in offline and picture.exists() and timing.exists():
-        wall, cpu, cores, day = timing.read_text().split()
+        wall, cpu, cores, day, *load = timing.read_text().split()
         out += [f"![{g['name']}, full size](images/gallery/{stem}_full.png)", "",
                 "```",
                 f"fgc compile graphs/gallery/{path.name} -o {stem}.fgpack",
                 f"fgplay render {stem}.fgpack --out {stem} {offline[stem].strip()}",
                 "```", "",
                 f"{float(wall):.0f} s for the stereo pair (`fgplay render` renders both eyes; the picture is the left one), "
-                f"{float(cpu):.0f} s of CPU time, on lavapipe with {cores} CPU cores ({day}).", ""]
+                f"{float(cpu):.0f} s of CPU time, on lavapipe with {cores} CPU cores ({day}"
+                + (f"; the machine ran other jobs too, 5-minute load average {float(load[0]):.1f}, so the wall time is"
+                   f" longer than the CPU time over {cores} cores" if load and float(load[0]) > float(cores) else "") + ").", ""]
 (root / "docs" / "gallery.md").write_text("\n".join(out))
 PY
 echo "wrote docs/gallery.md and $(ls "$IMAGES" | wc -l) files in docs/images/gallery/"
