@@ -5,7 +5,9 @@
 #
 #   bash bench/mandelbulber2/compare.sh [OUT_DIR]        (default docs/bench/mandelbulber2)
 #   REPEATS=3 SIZE=1024 FG_BUILD_DIR=build  (environment, defaults shown; or FGC=... FGPLAY=...;
-#   KEEP_WORK=DIR keeps the pictures)
+#   KEEP_WORK=DIR keeps the pictures and times there: a later run with the same DIR reuses its
+#   16-sample references and adds its runs to the table; ROWS="fast multiray" picks the rows,
+#   SAMPLES="1 4" the sample counts, REF=0 skips the 16-sample references and so the PSNR)
 #
 # Two rows, one per AO method:
 #   fast AO       Mandelbulber2 ambient_occlusion_mode 0 (quality 4: 15 distance samples along the normal)
@@ -32,6 +34,8 @@ FGC=${FGC:-$BUILD/compiler/fgc}
 FGPLAY=${FGPLAY:-$BUILD/runtime/fgplay}
 REPEATS=${REPEATS:-3}
 SIZE=${SIZE:-1024}
+SAMPLES=${SAMPLES:-1 4}
+REF=${REF:-1}
 export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$BUILD/mesa-cache}
 export QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen}
 MB2=${MB2:-mandelbulber2}
@@ -49,7 +53,7 @@ declare -A MB_AO=([fast]="ambient_occlusion_mode=0#ambient_occlusion_quality=4"
                   [multiray]="ambient_occlusion_mode=1#ambient_occlusion_quality=2")
 declare -A FG_GRAPH=([fast]="$ROOT/graphs/examples/lit_mandelbulb.json"
                      [multiray]="$HERE/mandelbulb_lit_marched_ao.json")
-ROWS="fast multiray"
+ROWS=${ROWS:-fast multiray}
 for row in $ROWS; do "$FGC" compile "${FG_GRAPH[$row]}" -o "$WORK/$row.fgpack" >/dev/null; done
 
 mb_aa() {  # samples -> Mandelbulber2 anti-aliasing overrides
@@ -73,16 +77,19 @@ run_fg() {  # row samples tag -> image $WORK/fg-ROW-SAMPLES-TAG.png (left eye)
   echo "fractograph,$row,$s,$tag,$wall,$(echo "$user + $sys" | bc)" >>"$WORK/times.csv"
 }
 
-: >"$WORK/times.csv"
+touch "$WORK/times.csv"
 # One warm-up run each (shader caches, page cache), not counted; then the references.
 for row in $ROWS; do
   echo "==> $row: warm-up and 16-sample references"
   run_fg "$row" 1 warm; run_mb "$row" 1 warm
-  run_mb "$row" 16 ref; run_fg "$row" 16 ref
+  if [ "$REF" = 1 ]; then
+    [ -s "$WORK/mb-$row-16-ref.png" ] || run_mb "$row" 16 ref
+    [ -s "$WORK/fg-$row-16-ref.png" ] || run_fg "$row" 16 ref
+  fi
 done
 for r in $(seq 1 "$REPEATS"); do
   for row in $ROWS; do
-    for s in 1 4; do
+    for s in $SAMPLES; do
       echo "==> repeat $r/$REPEATS: $row, $s sample(s) a pixel"
       if [ $((r % 2)) = 1 ]; then run_mb "$row" "$s" "r$r"; run_fg "$row" "$s" "r$r"
       else run_fg "$row" "$s" "r$r"; run_mb "$row" "$s" "r$r"; fi
@@ -98,26 +105,29 @@ from PIL import Image, ImageDraw
 from skimage.metrics import peak_signal_noise_ratio as psnr
 work, out, repeats, size = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
 rows = list(csv.reader(open(work / "times.csv")))
+def is_run(tag): return tag[:1] == "r" and tag[1:].isdigit()   # timed runs; not "warm" or "ref"
 def load(p): return np.asarray(Image.open(p).convert("RGB"))
 label = {"fast": "fast AO", "multiray": "multi-ray AO"}
 fg_ao = {"fast": "light.fake_ao (1 sample)", "multiray": "light.marched_ao (16 cones)"}
 mb_ao = {"fast": "fast AO, quality 4", "multiray": "multi-ray AO, quality 2"}
 table, raw = [], []
-for row in ("fast", "multiray"):
-    for s in (1, 4):
+present = [row for row in ("fast", "multiray") if any(r[1] == row and is_run(r[3]) for r in rows)]
+for row in present:
+    for s in sorted({int(r[2]) for r in rows if r[1] == row and is_run(r[3])}):
         med = {}
         for tool in ("mandelbulber2", "fractograph"):
-            runs = [r for r in rows if r[0] == tool and r[1] == row and int(r[2]) == s and r[3].startswith("r")]
+            runs = [r for r in rows if r[0] == tool and r[1] == row and int(r[2]) == s and is_run(r[3])]
             wall = statistics.median(float(r[4]) for r in runs)
             cpu = statistics.median(float(r[5]) for r in runs)
             pre = "mb" if tool == "mandelbulber2" else "fg"
-            err = psnr(load(work / f"{pre}-{row}-16-ref.png"), load(work / f"{pre}-{row}-{s}-r1.png"), data_range=255)
+            ref = work / f"{pre}-{row}-16-ref.png"
+            err = psnr(load(ref), load(work / f"{pre}-{row}-{s}-r1.png"), data_range=255) if ref.exists() else float("nan")
             med[tool] = (wall, cpu, err, len(runs))
             raw += [[tool, row, s, r[3], r[4], r[5]] for r in runs]
         mw, mc, me, n = med["mandelbulber2"]
         fw, fc, fe, _ = med["fractograph"]
-        table.append([label[row], s, f"{mw:.1f}", f"{mc:.1f}", f"{me:.1f}", f"{fw:.1f}", f"{fw / 2:.1f}", f"{fc:.1f}",
-                      f"{fe:.1f}", f"{mw / (fw / 2):.1f}", f"{mc / (fc / 2):.1f}", n])
+        table.append([label[row], s, f"{mw:.1f}", f"{mc:.1f}", ("-" if me != me else f"{me:.1f}"), f"{fw:.1f}", f"{fw / 2:.1f}", f"{fc:.1f}",
+                      ("-" if fe != fe else f"{fe:.1f}"), f"{mw / (fw / 2):.1f}", f"{mc / (fc / 2):.1f}", n])
 head = ["AO", "samples/pixel", "Mandelbulber2 wall s", "Mandelbulber2 CPU s", "Mandelbulber2 PSNR dB",
         "Fractograph pair wall s", "Fractograph per picture wall s", "Fractograph pair CPU s", "Fractograph PSNR dB",
         "speed-up, wall (per picture)", "speed-up, CPU (per picture)", "runs"]
@@ -127,19 +137,21 @@ with open(out / "runs.csv", "w", newline="") as f:
     w = csv.writer(f); w.writerow(["tool", "ao", "samples", "run", "wall_s", "cpu_s"]); w.writerows(raw)
 md = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)] + ["| " + " | ".join(map(str, r)) + " |" for r in table]
 (out / "results.md").write_text(
-    f"{size}x{size}, medians of {repeats} runs each, {os.cpu_count()} CPU cores, {datetime.date.today()}; "
+    f"{size}x{size}, medians of the runs counted in the last column, {os.cpu_count()} CPU cores, {datetime.date.today()}; "
     "PSNR against the same tool's 16-sample picture.\n\n" + "\n".join(md) + "\n")
 print("\n".join(md))
-# Side by side: Mandelbulber2 left, Fractograph right, one row per AO method, at 4 samples a pixel.
+# Side by side: Mandelbulber2 left, Fractograph right, one row per AO method, at 4 samples a pixel
+# (or the most there are).
 half = 512
-sheet = Image.new("RGB", (2 * half, 2 * half + 2 * 24), (255, 255, 255))
+shown = {row: max(int(r[2]) for r in rows if r[1] == row and is_run(r[3])) for row in present}
+sheet = Image.new("RGB", (2 * half, len(present) * (half + 24)), (255, 255, 255))
 d = ImageDraw.Draw(sheet)
-for i, row in enumerate(("fast", "multiray")):
+for i, row in enumerate(present):
     y = i * (half + 24)
     for j, (pre, name) in enumerate((("mb", f"Mandelbulber2 2.20: {mb_ao[row]}"), ("fg", f"Fractograph: {fg_ao[row]}"))):
-        img = Image.open(work / f"{pre}-{row}-4-r1.png").convert("RGB").resize((half, half), Image.LANCZOS)
+        img = Image.open(work / f"{pre}-{row}-{shown[row]}-r1.png").convert("RGB").resize((half, half), Image.LANCZOS)
         sheet.paste(img, (j * half, y + 24))
-        d.text((j * half + 6, y + 6), name + ", 4 samples/pixel", fill=(0, 0, 0))
+        d.text((j * half + 6, y + 6), name + f", {shown[row]} sample(s)/pixel", fill=(0, 0, 0))
 sheet.save(out / "side_by_side.png", optimize=True)
 PY
 echo "wrote $OUT/results.md, results.csv, runs.csv and side_by_side.png"
