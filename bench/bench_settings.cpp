@@ -1,5 +1,7 @@
 #include "bench_settings.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace fg::bench {
@@ -7,6 +9,14 @@ namespace fg::bench {
 namespace {
 
 std::string number(double v) { return fmt::format("{:g}", v); }
+
+// What each marched light term costs (a node's steps or rays knob: soft shadow, marched AO): the
+// frame with the term off (0) and at half its work, beside the default.
+template <class Knob>
+void light_term_knobs(const PackManifest& m, Knob knob) {
+    for (const auto& s : m.spec_constants)
+        if (s.name.starts_with("steps.") || s.name.starts_with("rays.")) knob(s.name, {0.0, std::floor(s.value / 2.0)});
+}
 
 }  // namespace
 
@@ -53,6 +63,7 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
     };
 
     if (o.quick) {
+        light_term_knobs(m, knob);
         pixels(true, 0.0);
         pixels(false, 0.5);
         knob("epsilon", {1.0});
@@ -74,6 +85,7 @@ std::vector<BenchSetting> make_sweep(const PackManifest& m, const SweepOptions& 
         }
         if (const auto* b = m.find_spec(f.bias_spec)) knob(b->name, {0.0, 1.05, 1.2});
     }
+    light_term_knobs(m, knob);
     knob("step_scale", {0.8, 1.2});
     for (std::uint32_t levels : {1u, 3u, 7u}) {
         FrameSettings f = def;

@@ -38,7 +38,7 @@ struct PortDefinition {
     std::optional<Constant> default_value;    // literal default (inputs)
     ImplicitSource implicit = ImplicitSource::None;  // "default": "position", "time", "light", ...
     std::optional<double> min, max;           // valid range of literals, checked per component
-    std::string knob;                         // "iterations" / "bias": becomes a specialization constant
+    std::string knob;                         // "iterations" / "bias" / "steps" / "rays": becomes a specialization constant
     std::optional<Effect> effect;             // outputs: using this output adds the effect
     bool required() const { return !default_value && implicit == ImplicitSource::None; }
 };

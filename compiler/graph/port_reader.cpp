@@ -62,9 +62,10 @@ std::optional<PortDefinition> read_port_definition(const nlohmann::json& j, cons
             for (const auto& d : local.items()) error(d.message, d.pointer);
         }
     }
-    if (r.optional(j, "knob", ptr, p.knob, Choices{"iterations", "bias"})) {
+    // iterations and bias: a fractal's; steps and rays: what a marched light term costs (0 turns it off).
+    if (r.optional(j, "knob", ptr, p.knob, Choices{"iterations", "bias", "steps", "rays"})) {
         if (!is_input) error("only inputs can be knobs", ptr + "/knob");
-        if (p.knob == "iterations" && p.type.concrete != ValueType::Int) error("an iterations knob is an int", ptr);
+        if (p.knob != "bias" && p.type.concrete != ValueType::Int) error(fmt::format("a {} knob is an int", p.knob), ptr);
         else if (p.knob == "bias" && p.type.concrete != ValueType::Float) error("a bias knob is a float", ptr);
     }
     if (std::string e; r.optional(j, "effect", ptr, e)) {

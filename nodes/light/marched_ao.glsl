@@ -8,7 +8,8 @@ void fg_light_marched_ao(vec3 position, vec3 normal, float radius, int rays, flo
     vec3 tangent = vec3(1.0 + side * normal.x * normal.x * a, side * b, -side * normal.x);
     vec3 bitangent = vec3(b, side + normal.y * normal.y * a, -normal.y);
     // Each cone's share of the hemisphere, 2 pi / rays of solid angle: cos of its half-angle.
-    float c = 1.0 - 1.0 / float(rays);
+    float cones = float(max(rays, 1));
+    float c = 1.0 - 1.0 / cones;
     float slope = sqrt(max(1.0 - c * c, 0.0)) / max(c, 1e-3);
     vec3 origin = position + normal * start;
     float open = 0.0;
@@ -28,5 +29,6 @@ void fg_light_marched_ao(vec3 position, vec3 normal, float radius, int rays, flo
         float q = clamp(passage, -1.0, 1.0);
         open += 0.25 * (1.0 + q) * (1.0 + q) * (2.0 - q);
     }
-    ao = clamp(1.0 - strength * (1.0 - open / float(rays)), 0.0, 1.0);
+    // No rays: no occlusion (the term dropped).
+    ao = rays > 0 ? clamp(1.0 - strength * (1.0 - open / cones), 0.0, 1.0) : 1.0;
 }

@@ -60,15 +60,7 @@ SampledTiles SampleAccumulator::tiles_above(double target) const {
     for (std::uint32_t y = 0; y < height_; ++y)
         for (std::uint32_t x = 0; x < width_; ++x)
             if (noise(static_cast<std::size_t>(y) * width_ + x) > target) noisy.active[std::size_t(y / 8) * noisy.columns + x / 8] = 1;
-    SampledTiles grown = noisy;
-    for (std::uint32_t ty = 0; ty < noisy.rows; ++ty)
-        for (std::uint32_t tx = 0; tx < noisy.columns; ++tx) {
-            if (!noisy.takes(tx, ty)) continue;
-            for (std::uint32_t ny = ty > 0 ? ty - 1 : 0; ny <= std::min(ty + 1, noisy.rows - 1); ++ny)
-                for (std::uint32_t nx = tx > 0 ? tx - 1 : 0; nx <= std::min(tx + 1, noisy.columns - 1); ++nx)
-                    grown.active[std::size_t(ny) * grown.columns + nx] = 1;
-        }
-    return grown;
+    return noisy;
 }
 
 }  // namespace fg

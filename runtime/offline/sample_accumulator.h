@@ -27,8 +27,7 @@ public:
     const std::vector<std::uint32_t>& counts() const { return counts_; }
     // The standard error of pixel i's mean in display units (infinite below two samples).
     double noise(std::size_t pixel) const;
-    // The tiles with a pixel whose noise is above `target`, or whose neighbour tile has one (a
-    // tile's edge pixels blend with the next tile's when they are shown side by side).
+    // The tiles with a pixel whose noise is above `target`.
     SampledTiles tiles_above(double target) const;
 
 private:

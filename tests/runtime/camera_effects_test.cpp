@@ -174,7 +174,7 @@ TEST_F(MotionBlur, a_camera_moving_while_the_shutter_is_open_blurs_an_edge_by_it
     EXPECT_NEAR(measured, expected, 0.1 * expected) << figures;
 }
 
-TEST(AdaptiveSampling, a_pixel_noise_is_the_standard_error_of_its_mean_and_noisy_tiles_keep_their_neighbours) {
+TEST(AdaptiveSampling, a_pixel_noise_is_the_standard_error_of_its_mean_and_only_its_tile_samples_on) {
     // 24x16 pixels (3x2 tiles): pixel (3, 3) alternates between black and white, the rest stay grey.
     SampleAccumulator acc;
     SampledTiles all(24, 16);
@@ -187,11 +187,12 @@ TEST(AdaptiveSampling, a_pixel_noise_is_the_standard_error_of_its_mean_and_noisy
     EXPECT_NEAR(acc.noise(3 * 24 + 3), std::sqrt(1.0 / 12.0), 1e-9);
     EXPECT_EQ(acc.noise(0), 0.0);
     SampledTiles noisy = acc.tiles_above(0.01);
-    // The noisy tile (0, 0) and the tiles around it: (1, 0), (0, 1), (1, 1); not (2, *).
-    EXPECT_EQ(noisy.active, (std::vector<std::uint8_t>{1, 1, 0, 1, 1, 0}));
-    // The next sample goes to those tiles alone: their pixels count 5, the others 4.
+    // The noisy pixel's tile (0, 0) alone.
+    EXPECT_EQ(noisy.active, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0}));
+    // The next sample goes to that tile alone: its pixels count 5, the others 4.
     acc.add(Rgba8Image{24, 16, std::vector<std::uint8_t>(24 * 16 * 4, 128)}, &noisy);
     EXPECT_EQ(acc.counts()[0], 5u);
+    EXPECT_EQ(acc.counts()[8], 4u);
     EXPECT_EQ(acc.counts()[23], 4u);
     EXPECT_EQ(acc.mean().pixels[4 * 23], 128) << "a pixel's mean divides by its own count";
 }
