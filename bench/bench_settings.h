@@ -11,6 +11,10 @@
 
 namespace fg::bench {
 
+// The group of the settings that drop or thin a light term: a cheaper look, not a more or less
+// accurate march.
+inline constexpr const char* kLightTermGroup = "light terms";
+
 struct BenchSetting {
     std::string name;        // "epsilon=1", "grid: reproject-trust eps=1 ..."
     std::string group;       // the knob swept ("epsilon", "grid", "baseline", ...)
