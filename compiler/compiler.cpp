@@ -2,6 +2,7 @@
 
 #include "codegen/double_lowering.h"
 
+#include <algorithm>
 #include <chrono>
 #include <future>
 #include <fmt/format.h>
@@ -45,13 +46,23 @@ struct PassBuild {
     StageTimes times;
 };
 
-// One pass from template to reflected, validated SPIR-V. Runs on its own thread.
+// One pass from template to reflected, validated SPIR-V, or from the cache when its GLSL is one
+// compiled before. Runs on its own thread.
 PassBuild build_pass(const PassTemplate& tmpl, const EffectSet& effects, const SceneCodegen& scene,
                      const std::vector<ManifestSpecConstant>& spec, const CompileOptions& options) {
     PassBuild b;
     Stopwatch clock;
     b.pass.source = assemble_pass(tmpl, effects, scene, spec);
     b.times.codegen_ms = clock.lap();
+    const std::uint64_t key = PassCache::key(tmpl.name, b.pass.source.glsl, options.optimize);
+    if (options.cache)
+        if (auto cached = options.cache->find(key)) {
+            b.pass.spirv = std::move(cached->spirv);
+            b.reflection = std::move(cached->reflection);
+            b.diag = std::move(cached->diag);
+            return b;
+        }
+    b.times.passes_compiled = 1;
     auto spirv = compile_glsl(tmpl.name, b.pass.source.glsl, b.pass.source.source_map, b.diag);
     b.times.glslang_ms = clock.lap();
     if (!spirv) return b;
@@ -64,6 +75,7 @@ PassBuild build_pass(const PassTemplate& tmpl, const EffectSet& effects, const S
     b.reflection = reflect_spirv(tmpl.name, *spirv, b.diag);
     b.times.reflect_ms = clock.lap();
     b.pass.spirv = std::move(*spirv);
+    if (options.cache && b.reflection) options.cache->store(key, {b.pass.spirv, *b.reflection, b.diag});
     return b;
 }
 
@@ -173,8 +185,12 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     SceneCodegen scene(*ir, library);
     // Passes are independent: compile them on all cores (glslang and SPIRV-Tools dominate the time).
     std::vector<const PassTemplate*> templates;
+    auto wanted = [&](const std::string& name) {
+        return options.only_passes.empty() ||
+               std::find(options.only_passes.begin(), options.only_passes.end(), name) != options.only_passes.end();
+    };
     for (const auto& tmpl : pass_templates())
-        if (tmpl.runs_with(effects)) templates.push_back(&tmpl);
+        if (tmpl.runs_with(effects) && wanted(tmpl.name)) templates.push_back(&tmpl);
     std::vector<PassBuild> builds(templates.size());
     {
         std::vector<std::future<void>> jobs;
@@ -190,6 +206,7 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
         result.times.glslang_ms += b.times.glslang_ms;
         result.times.optimize_ms += b.times.optimize_ms;
         result.times.reflect_ms += b.times.reflect_ms;
+        result.times.passes_compiled += b.times.passes_compiled;
         if (!b.reflection) continue;
         const PassReflection& refl = *b.reflection;
         ManifestPass mp;

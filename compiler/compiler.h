@@ -18,6 +18,7 @@
 #include "ir/constant_folding.h"
 #include "ir/ir_graph.h"
 #include "pack/manifest.h"
+#include "spirv/pass_cache.h"
 
 namespace fg {
 
@@ -28,6 +29,10 @@ struct CompileOptions {
     bool include_glsl = false;     // store each pass's GLSL in the pack (debugging)
     // Overrides the graph's scene.precision: true "double", false "float" (fgc compile --precision).
     std::optional<bool> double_precision;
+    // Only these passes (say, the ones a preview plays); empty: every pass the graph's effects need.
+    std::vector<std::string> only_passes;
+    // Passes compiled before, reused where their GLSL is unchanged (and new ones stored); may be null.
+    PassCache* cache = nullptr;
 };
 
 struct CompiledPass {
@@ -39,6 +44,7 @@ struct StageTimes {
     // Stage times summed over passes (which run in parallel), and the wall-clock total.
     double load_ms = 0, ir_ms = 0, analysis_ms = 0, codegen_ms = 0, glslang_ms = 0, optimize_ms = 0, reflect_ms = 0;
     double wall_ms = 0;
+    std::size_t passes_compiled = 0;   // passes glslang compiled; the others came from the cache
     double total_ms() const { return load_ms + ir_ms + analysis_ms + codegen_ms + glslang_ms + optimize_ms + reflect_ms; }
 };
 

@@ -35,7 +35,9 @@ PackSource::Outcome PackSource::build() const {
         }
         std::stringstream text;
         text << in.rdbuf();
-        auto result = compile_graph(text.str(), NodeLibrary::builtin(), {}, diag);
+        CompileOptions options;
+        options.cache = pass_cache_.get();
+        auto result = compile_graph(text.str(), NodeLibrary::builtin(), options, diag);
         if (!result) {
             out.error = diag.format(path_);
             return out;

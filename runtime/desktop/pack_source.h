@@ -12,6 +12,7 @@
 
 #include "frame/frame_executor.h"
 #include "pack/pack_reader.h"
+#include "spirv/pass_cache.h"
 
 namespace fg::desktop {
 
@@ -47,6 +48,9 @@ private:
     std::string path_;
     bool watch_ = false, is_graph_ = false;
     ExecutorFactory factory_;
+    // Passes compiled before: a save recompiles only the passes whose code it changed. Shared with
+    // the compile thread, and thread-safe.
+    std::unique_ptr<PassCache> pass_cache_ = std::make_unique<PassCache>();
     std::filesystem::file_time_type stamp_{};
     std::chrono::steady_clock::time_point last_check_{};
     std::future<Outcome> pending_;

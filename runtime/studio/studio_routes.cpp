@@ -85,7 +85,9 @@ std::optional<glm::dvec3> vec3_at(const ordered_json& j, const char* key) {
 json state_json(StudioSession& s, const EditOutcome& o) {
     return {{"revision", o.revision},          {"ok", o.ok},
             {"diagnostics", o.diagnostics},    {"compile_ms", o.compile_ms},
-            {"pipelines_ms", o.pipelines_ms},  {"compiles", s.compiles()},
+            {"pipelines_ms", o.pipelines_ms},  {"glslang_ms", o.glslang_ms},
+            {"optimize_ms", o.optimize_ms},    {"passes_compiled", o.passes_compiled},
+            {"compiles", s.compiles()},
             {"submitted", s.edits().submitted()}, {"skipped", s.edits().skipped()},
             {"busy", s.edits().busy()},        {"frames", s.preview().frames()},
             {"node_preview_compiles", s.node_previews().compiles()}};
@@ -139,7 +141,9 @@ void add_file_routes(httplib::Server& server, StudioSession& s, const std::strin
         if (!target) return refuse(res, 400, error);
         if (target->extension() != ".fgpack") return refuse(res, 400, "a shader pack's name ends in .fgpack");
         Diagnostics diag;
-        auto result = compile_graph(*text, s.library(), {}, diag);
+        CompileOptions options;
+        options.cache = &s.pass_cache();   // passes the preview compiled optimised are not compiled again
+        auto result = compile_graph(*text, s.library(), options, diag);
         if (!result) return reply(res, 422, {{"error", "the graph does not compile"}, {"diagnostics", diagnostics_json(diag)}});
         auto bytes = pack_bytes(*result);
         std::ofstream(*target, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),

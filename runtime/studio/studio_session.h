@@ -7,8 +7,11 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "compiler.h"
 #include "graph/node_library.h"
 #include "studio/calibration_job.h"
 #include "studio/edit_queue.h"
@@ -38,9 +41,12 @@ public:
 
     // Compiles of the preview's graph (node previews count apart).
     std::uint64_t compiles() const { return compiles_; }
+    // Every pass compiled this session, by its GLSL: an edit recompiles only the passes it changed.
+    PassCache& pass_cache() { return pass_cache_; }
 
 private:
     EditOutcome compile(const std::string& graph_text, std::uint64_t revision);
+    std::optional<CompileResult> compile_preview(const std::string& graph_text, bool every_pass, Diagnostics& diag);
 
     const NodeLibrary& library_;
     GraphFolder folder_;
@@ -48,6 +54,8 @@ private:
     NodePreviews node_previews_;
     CalibrationJob calibration_;
     std::atomic<std::uint64_t> compiles_{0};
+    PassCache pass_cache_;
+    std::vector<std::string> preview_passes_;   // the programs the playing scene runs; empty: not known yet
     std::unique_ptr<EditQueue> edits_;   // last: its thread uses everything above
 };
 

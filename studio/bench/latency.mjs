@@ -1,8 +1,13 @@
 // How long the studio takes to answer what a person does, over its HTTP API (what the page does):
 //   slider move -> new preview frame (a uniform changes, nothing recompiles)
-//   graph edit  -> compile + pipelines + first frame (warm: the server is already running)
+//   graph edit  -> compile + pipelines + first frame (warm: the server is already running), three
+//                  kinds: a literal changed, a wire moved, a node added
 // A benchmark, not a test: prints a Markdown table for docs/studio.md.
 //   node studio/bench/latency.mjs FGPLAY GRAPH [--size 256] [--moves 60] [--edits 20]
+// The graph must have the gallery Mandelbulb's nodes `tone` (math.scale), `shift` (math.add) and
+// `palette` (palette.cosine). Every edit leaves a graph not seen before: each round of three edits
+// starts with a new value of tone's literal, so no edit can be answered from the server's cache of
+// compiled passes unless the pass it changes did not change.
 import { spawn } from "node:child_process";
 
 const [fgplay, graphPath, ...rest] = process.argv.slice(2);
@@ -66,25 +71,49 @@ for (let i = 0; i < moves; ++i) {
 }
 const compilesAfter = (await frame({})).compiles;
 
-const edit = [], compileMs = [], pipelinesMs = [];
-for (let i = 0; i < edits; ++i) {
-  const g = JSON.parse(JSON.stringify(graph));
-  const tone = g.nodes.find((n) => n.type === "math.scale");
-  if (tone) tone.inputs.s = 0.5 + 0.01 * (i + 1);   // a literal: baked into the code, so it recompiles
-  const t = now();
-  const state = await compile(g);
-  await frame({});
-  edit.push(now() - t);
-  compileMs.push(state.compile_ms);
-  pipelinesMs.push(state.pipelines_ms);
+// One round: a literal (baked into the code, so it recompiles), a wire moved (shift.b between the
+// hue parameter and the trap's x), a node added in front of the palette.
+const node = (g, id) => g.nodes.find((n) => n.id === id);
+const kinds = {
+  literal: (g, round) => { node(g, "tone").inputs.s = 0.5 + 0.001 * (round + 1); },
+  wire: (g) => { const shift = node(g, "shift"); shift.inputs.b = shift.inputs.b === "$hue" ? "trap.x" : "$hue"; },
+  "node added": (g, round) => {
+    const palette = node(g, "palette");
+    g.nodes.push({ id: `added${round}`, type: "math.add", inputs: { a: palette.inputs.t, b: 0.01 } });
+    palette.inputs.t = `added${round}`;
+  },
+};
+const measured = Object.fromEntries(Object.keys(kinds).map((k) => [k, { total: [], compile: [], glslang: [], optimize: [], pipelines: [], frame: [], passes: [] }]));
+const current = JSON.parse(JSON.stringify(graph));
+for (let round = 0; round < edits; ++round) {
+  for (const [kind, edit] of Object.entries(kinds)) {
+    edit(current, round);
+    const t = now();
+    const state = await compile(current);
+    const compiled = now();
+    await frame({});
+    const m = measured[kind];
+    m.total.push(now() - t);
+    m.frame.push(now() - compiled);
+    m.compile.push(state.compile_ms);
+    m.glslang.push(state.glslang_ms ?? NaN);
+    m.optimize.push(state.optimize_ms ?? NaN);
+    m.pipelines.push(state.pipelines_ms);
+    m.passes.push(state.passes_compiled ?? NaN);
+  }
 }
 server.kill("SIGTERM");
 
+const ms = (x) => (Number.isNaN(x) ? "n/a" : `${x.toFixed(0)} ms`);
 const row = (what, s, extra) => `| ${what} | ${s.median.toFixed(0)} ms | ${s.p95.toFixed(0)} ms | ${s.n} | ${extra} |`;
-const g = stats(sliderGpu), sv = stats(sliderServer), c = stats(compileMs), p = stats(pipelinesMs);
-console.log(`| step | median | p95 | runs | of which |`);
+const g = stats(sliderGpu), sv = stats(sliderServer);
+console.log(`| step | median | p95 | runs | of which (medians) |`);
 console.log(`|---|---|---|---|---|`);
 console.log(row(`slider move -> new frame (${size}² per eye)`, stats(slider),
-  `render + read back + PNG on the server ${sv.median.toFixed(0)} ms median${g.median >= 0 ? `, GPU ${g.median.toFixed(0)} ms` : ""}; compiles during the moves: ${compilesAfter - compilesBefore}`));
-console.log(row("graph edit -> compile + first frame (warm)", stats(edit),
-  `compile ${c.median.toFixed(0)} ms, pipelines ${p.median.toFixed(0)} ms (medians)`));
+  `render + read back + PNG on the server ${sv.median.toFixed(0)} ms${g.median >= 0 ? `, GPU ${g.median.toFixed(0)} ms` : ""}; compiles during the moves: ${compilesAfter - compilesBefore}`));
+for (const [kind, m] of Object.entries(measured)) {
+  const median = (xs) => stats(xs).median;
+  console.log(row(`graph edit (${kind}) -> first new frame`, stats(m.total),
+    `compile ${ms(median(m.compile))} (glslang ${ms(median(m.glslang))}, spirv-opt ${ms(median(m.optimize))} CPU over ` +
+    `${Number.isNaN(median(m.passes)) ? "all" : median(m.passes)} passes compiled), pipelines ${ms(median(m.pipelines))}, first frame ${ms(median(m.frame))}`));
+}
