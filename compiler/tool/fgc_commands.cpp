@@ -93,13 +93,14 @@ int check(const Common& c, const std::string& graph) {
 }
 
 int compile(const Common& c, const std::string& graph, const std::string& output_arg, const std::string& glsl_dir,
-            bool include_glsl, bool verbose, const std::string& precision) {
+            bool include_glsl, bool verbose, const std::string& precision, bool optimize) {
     Diagnostics diag;
     auto lib = library_for(c, diag);
     auto text = read_text(graph, diag);
     if (!text) return report(diag, graph);
     CompileOptions options;
     options.include_glsl = include_glsl;
+    options.optimize = optimize;
     if (!precision.empty()) options.double_precision = precision == "double";
     auto result = compile_graph(*text, lib, options, diag);
     if (report(diag, graph) != 0 || !result) return 1;

@@ -14,7 +14,7 @@ struct Common {
 int check(const Common& c, const std::string& graph);
 // precision: "" keeps the graph's scene.precision, else "float" or "double".
 int compile(const Common& c, const std::string& graph, const std::string& output, const std::string& glsl_dir,
-            bool include_glsl, bool verbose, const std::string& precision = "");
+            bool include_glsl, bool verbose, const std::string& precision = "", bool optimize = true);
 int info(const Common& c, const std::string& pack, bool json);
 int nodes(const Common& c, const std::string& type, bool markdown);
 int probe(const Common& c, const std::string& graph, double x, double y, double z);

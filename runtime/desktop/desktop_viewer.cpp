@@ -19,6 +19,7 @@
 #include "locomotion/viewer_step.h"
 #include "graph/scene_settings.h"
 #include "image_output.h"
+#include "vk/pipeline_cache_file.h"
 #include "vk/vulkan_error.h"
 
 namespace fg::desktop {
@@ -70,6 +71,7 @@ int view(const ViewOptions& o) {
         co.require_timestamps = false;
         co.shader_float64 = true;   // where supported: packs of precision "double" need it
         co.hooks = WindowPresenter::context_hooks();
+        co.pipeline_cache_file = vk::user_pipeline_cache_file();
         vk::Context ctx(co);
         struct Detach {
             WindowPresenter& p;
@@ -86,13 +88,16 @@ int view(const ViewOptions& o) {
         stereo.width = o.width;
         stereo.height = o.height;
         auto fov_of = [&](const SceneSettings& s) { return Fov::symmetric(s.camera.fov_deg, double(o.width) / o.height); };
-        // Executors follow `frame` and `stereo` as they are when built: the governor's level too.
+        // Executors follow `frame` and `stereo` as they are when built: the governor's level too. A
+        // graph saved again (--watch) reuses the pipelines of the passes it did not change.
+        PipelineStore pipelines;
         auto build_executor = [&](const Pack& p) {
             const SceneSettings& s = p.manifest.scene;
             StereoSettings st = stereo;
             st.world_scale = s.world_scale;
             StereoViews v = make_stereo_views(HeadPose{}, fov_of(s), fov_of(s), st);
-            return std::make_unique<FrameExecutor>(ctx, p, FrameGraph::build(p.manifest, frame, v.centre.width, v.centre.height));
+            return std::make_unique<FrameExecutor>(ctx, p, FrameGraph::build(p.manifest, frame, v.centre.width, v.centre.height),
+                                                   &pipelines);
         };
         PackSource source(o.path, o.watch, build_executor);
         LoadedPack playing = source.load_now();

@@ -119,7 +119,7 @@ std::string FrameExecutor::program_key(const FramePass& pass) {
     return key;
 }
 
-FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph)
+FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph, PipelineStore* pipelines)
     : ctx_(ctx), manifest_(pack.manifest), graph_(std::move(graph)), batches_(graph_.batches()) {
     auto check_block = [&](const char* name, std::size_t size) {
         auto it = manifest_.uniform_blocks.find(name);
@@ -138,7 +138,7 @@ FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGrap
             "shaderFloat64 (or the context was made without it); use a device with 64-bit floats, or recompile "
             "with fgc compile --precision float (deep zooms then lose their structure)",
             manifest_.name, ctx.device_name()));
-    make_programs(pack);
+    make_programs(pack, pipelines);
     check_declarations();
     make_resources();
     make_descriptor_sets();
@@ -146,7 +146,7 @@ FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGrap
 
 FrameExecutor::~FrameExecutor() = default;
 
-void FrameExecutor::make_programs(const Pack& pack) {
+void FrameExecutor::make_programs(const Pack& pack, PipelineStore* pipelines) {
     for (const auto& pass : graph_.passes()) {
         std::string key = program_key(pass);
         if (programs_.count(key)) continue;
@@ -159,7 +159,6 @@ void FrameExecutor::make_programs(const Pack& pack) {
         }
         Program prog;
         prog.manifest = mp;
-        prog.layout = std::make_unique<vk::DescriptorSetLayout>(ctx_, bindings);
         auto spec = specialization_for(manifest_, *mp, graph_.settings.knobs, graph_.settings.count_evaluations);
         for (std::uint32_t id : mp->dispatch_constants) {
             if (id == kSpecProjection.id) spec.set(id, static_cast<std::int32_t>(graph_.settings.projection));
@@ -167,9 +166,9 @@ void FrameExecutor::make_programs(const Pack& pack) {
             if (id == kSpecFoveated.id) spec.set(id, graph_.settings.foveation > 0.0 ? 1 : 0);
             if (auto it = pass.specialize.find(id); it != pass.specialize.end()) spec.set(id, it->second);
         }
-        prog.pipeline = std::make_unique<vk::ComputePipeline>(ctx_, pack.spirv.at(mp->name),
-                                                              std::vector<VkDescriptorSetLayout>{prog.layout->handle()},
-                                                              mp->push_constant_size, spec);
+        const auto& spirv = pack.spirv.at(mp->name);
+        prog.kept = pipelines ? pipelines->get(ctx_, spirv, bindings, mp->push_constant_size, spec)
+                              : build_pipeline(ctx_, spirv, bindings, mp->push_constant_size, spec);
         programs_[key] = std::move(prog);
     }
     for (const auto& pass : graph_.passes()) pass_programs_.push_back(&programs_.at(program_key(pass)));
@@ -288,7 +287,7 @@ void FrameExecutor::make_descriptor_sets() {
         const Program& prog = *pass_programs_[i];
         std::array<VkDescriptorSet, 2> sets{};
         for (std::uint64_t parity = 0; parity < 2; ++parity) {
-            VkDescriptorSet set = sets[parity] = pool_->allocate(*prog.layout);
+            VkDescriptorSet set = sets[parity] = pool_->allocate(prog.kept->layout);
             for (const auto& b : prog.manifest->bindings) {
                 std::string resource;
                 for (const auto& [name, res] : pass.bindings)
@@ -513,13 +512,13 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
                 const auto& tiles = tile_lists_[pass.tile_list].tiles;
                 if (!tiles.empty()) {
                     auto g = tile_dispatch_groups(tiles.size());
-                    prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
+                    prog.kept->pipeline.dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
                 }
             } else if (pass.indirect.empty()) {
                 auto g = group_count(pass, *prog.manifest, ctx_, graph_.settings.persistent_invocations);
-                prog.pipeline->dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
+                prog.kept->pipeline.dispatch(cmd, set, {g[0], g[1], g[2]}, pass.push);
             } else {
-                prog.pipeline->dispatch_indirect(cmd, set, buffers_.at(pass.indirect)->handle(), 0, pass.push);
+                prog.kept->pipeline.dispatch_indirect(cmd, set, buffers_.at(pass.indirect)->handle(), 0, pass.push);
             }
         }
     }

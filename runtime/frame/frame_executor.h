@@ -14,6 +14,7 @@
 
 #include "frame_graph.h"
 #include "gpu_uniforms.h"
+#include "pipeline_store.h"
 #include "pack/pack_reader.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
@@ -49,7 +50,8 @@ public:
     // Throws std::runtime_error with a clear message for a pack that does not fit this runtime
     // (a missing binding, a knob out of range, a uniform block or push constant of another size,
     // a binding the pass does not declare as the shader uses it).
-    FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph);
+    // With `pipelines`, pipelines built before for the same SPIR-V and settings are reused.
+    FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph, PipelineStore* pipelines = nullptr);
     ~FrameExecutor();
 
     // The frame's uniforms; the executor adds the previous frame's eyes and whether its levels hold
@@ -88,12 +90,11 @@ public:
 
 private:
     struct Program {
-        std::unique_ptr<vk::DescriptorSetLayout> layout;
-        std::unique_ptr<vk::ComputePipeline> pipeline;
+        std::shared_ptr<const KeptPipeline> kept;   // set layout and pipeline
         const ManifestPass* manifest = nullptr;
     };
     static std::string program_key(const FramePass& pass);
-    void make_programs(const Pack& pack);
+    void make_programs(const Pack& pack, PipelineStore* pipelines);
     void check_declarations() const;
     void make_resources();
     void make_descriptor_sets();

@@ -23,7 +23,9 @@ struct RenderedFrame {
 
 class HeadlessRenderer {
 public:
-    HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame, const StereoSettings& stereo);
+    // With `pipelines`, pipelines built before for the same SPIR-V and settings are reused.
+    HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame, const StereoSettings& stereo,
+                     PipelineStore* pipelines = nullptr);
 
     // The camera the scene starts with (scene.camera), symmetric field of view.
     HeadPose scene_camera() const;

@@ -21,12 +21,13 @@ FrameSettings preview_frame_settings(std::uint32_t eye_size, bool taa) {
 PreviewRenderer::PreviewRenderer(const vk::Context& ctx, std::uint32_t eye_size) : ctx_(ctx), size_(eye_size) {}
 
 std::unique_ptr<PreviewScene> prepare_scene(const vk::Context& ctx, Pack pack, std::uint64_t revision,
-                                            std::uint32_t eye_size, bool with_probe) {
+                                            std::uint32_t eye_size, bool with_probe, PipelineStore* pipelines) {
     auto scene = std::make_unique<PreviewScene>();
     scene->pack = std::make_unique<Pack>(std::move(pack));
     StereoSettings stereo;
     stereo.world_scale = scene->pack->manifest.scene.world_scale;
-    scene->renderer = std::make_unique<HeadlessRenderer>(ctx, *scene->pack, preview_frame_settings(eye_size, true), stereo);
+    scene->renderer = std::make_unique<HeadlessRenderer>(ctx, *scene->pack, preview_frame_settings(eye_size, true), stereo,
+                                                         pipelines);
     if (with_probe) scene->probe = std::make_unique<CollisionProbe>(ctx, *scene->pack);
     scene->revision = revision;
     return scene;

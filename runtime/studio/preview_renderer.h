@@ -15,6 +15,7 @@
 
 #include "common/value_type.h"
 #include "frame/headless_renderer.h"
+#include "frame/pipeline_store.h"
 #include "locomotion/collision_probe.h"
 #include "pack/pack_reader.h"
 #include "vk/context.h"
@@ -57,7 +58,8 @@ struct ProbeHit {
 // Pipelines (and the probe, if asked) for a pack, on any thread; throws std::runtime_error if the
 // pack does not fit this runtime.
 std::unique_ptr<PreviewScene> prepare_scene(const vk::Context& ctx, Pack pack, std::uint64_t revision,
-                                            std::uint32_t eye_size, bool with_probe);
+                                            std::uint32_t eye_size, bool with_probe,
+                                            PipelineStore* pipelines = nullptr);
 
 // One frame of a scene as the page asked for it; `rendered` keeps the eyes and depths.
 PreviewFrame render_scene(PreviewScene& scene, const PreviewRequest& request, std::uint32_t frame_index,
@@ -67,8 +69,9 @@ class PreviewRenderer {
 public:
     PreviewRenderer(const vk::Context& ctx, std::uint32_t eye_size);
 
-    std::unique_ptr<PreviewScene> prepare(Pack pack, std::uint64_t revision) const {
-        return prepare_scene(ctx_, std::move(pack), revision, size_, true);
+    // The pipelines of passes an edit did not change are the previous scene's.
+    std::unique_ptr<PreviewScene> prepare(Pack pack, std::uint64_t revision) {
+        return prepare_scene(ctx_, std::move(pack), revision, size_, true, &pipelines_);
     }
     void show(std::unique_ptr<PreviewScene> scene);
 
@@ -84,6 +87,7 @@ public:
 private:
     const vk::Context& ctx_;
     std::uint32_t size_;
+    PipelineStore pipelines_;
     mutable std::mutex mutex_;
     std::unique_ptr<PreviewScene> scene_;
     RenderedFrame last_;
