@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "vk/pipeline_cache_file.h"
 #include "vk/vulkan_error.h"
 
 namespace fg::fgplay {
@@ -30,6 +31,7 @@ vk::ContextOptions render_context_options(bool validation, const std::string& de
     options.device = device;
     options.require_timestamps = false;
     options.shader_float64 = true;   // on where supported: packs of precision "double" need it
+    options.pipeline_cache_file = vk::user_pipeline_cache_file();
     return options;
 }
 

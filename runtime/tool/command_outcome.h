@@ -17,7 +17,8 @@ std::optional<Pack> read_pack_or_report(const std::string& path);
 int run_reporting_errors(const std::function<int()>& body);
 
 // The Vulkan context every `fgplay render` path asks for: validation and device as given,
-// timestamps optional (lavapipe and some drivers lack them; times are then left out).
+// timestamps optional (lavapipe and some drivers lack them; times are then left out), and the
+// user's pipeline cache (vk/pipeline_cache_file.h).
 vk::ContextOptions render_context_options(bool validation, const std::string& device);
 
 // True (after saying so) if the validation layer reported errors.

@@ -12,6 +12,7 @@
 #include "vk/device_selection.h"
 #include "vk/extensions.h"
 #include "vk/log.h"
+#include "vk/pipeline_cache_file.h"
 #include "vk/vulkan_error.h"
 
 namespace fg::vk {
@@ -282,15 +283,45 @@ void Context::create_device(const ContextOptions& options) {
           "vkCreateDevice");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 
-    // In memory only: it saves recompiling a pipeline that is built twice in one run.
+    pipeline_cache_file_ = options.pipeline_cache_file;
+    create_pipeline_cache();
+}
+
+// Saves recompiling a pipeline built twice in one run and, with a file, one built in an earlier run.
+void Context::create_pipeline_cache() {
+    std::vector<std::byte> saved;
+    if (!pipeline_cache_file_.empty()) saved = read_pipeline_cache(pipeline_cache_file_, properties_);
     VkPipelineCacheCreateInfo cache_info{};
     cache_info.sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO;
-    check(vkCreatePipelineCache(device_, &cache_info, nullptr, &pipeline_cache_), "vkCreatePipelineCache");
+    cache_info.initialDataSize = saved.size();
+    cache_info.pInitialData = saved.empty() ? nullptr : saved.data();
+    // A driver may still refuse data whose header it accepted: start empty then.
+    if (vkCreatePipelineCache(device_, &cache_info, nullptr, &pipeline_cache_) != VK_SUCCESS) {
+        cache_info.initialDataSize = 0;
+        cache_info.pInitialData = nullptr;
+        saved.clear();
+        check(vkCreatePipelineCache(device_, &cache_info, nullptr, &pipeline_cache_), "vkCreatePipelineCache");
+    }
+    pipeline_cache_loaded_bytes_ = saved.size();
+}
+
+// Written only when it holds something new; a cache that cannot be saved costs the next run time,
+// never this one an error.
+void Context::save_pipeline_cache() noexcept {
+    if (pipeline_cache_file_.empty() || !pipeline_cache_) return;
+    std::size_t size = 0;
+    if (vkGetPipelineCacheData(device_, pipeline_cache_, &size, nullptr) != VK_SUCCESS || size == 0) return;
+    if (size == pipeline_cache_loaded_bytes_ && std::filesystem::exists(pipeline_cache_file_)) return;
+    std::vector<std::byte> data(size);
+    if (vkGetPipelineCacheData(device_, pipeline_cache_, &size, data.data()) != VK_SUCCESS) return;
+    data.resize(size);
+    write_pipeline_cache(pipeline_cache_file_, data);
 }
 
 void Context::destroy() noexcept {
     if (device_) {
         vkDeviceWaitIdle(device_);
+        save_pipeline_cache();
         if (pipeline_cache_) vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
         // Still under the messenger: leaked child objects are reported here.
         vkDestroyDevice(device_, nullptr);

@@ -3,6 +3,7 @@
 // logical device. Everything else borrows a `const Context&` and must not outlive it.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -31,6 +32,9 @@ struct ContextOptions {
     bool shader_int64 = false;
     // Adds the validation layer's synchronization checks (missing barriers); slow, for tests.
     bool synchronization_validation = false;
+    // Where the pipeline cache is loaded from and saved to when the context ends (see
+    // pipeline_cache_file.h; user_pipeline_cache_file() is the user's); empty: in memory only.
+    std::filesystem::path pipeline_cache_file;
     ContextCreationHooks hooks;
 };
 
@@ -84,6 +88,8 @@ private:
     void create_instance(bool validation, bool synchronization_validation);
     void select_physical_device(const ContextOptions& options);
     void create_device(const ContextOptions& options);
+    void create_pipeline_cache();
+    void save_pipeline_cache() noexcept;
     void destroy() noexcept;
 
     std::shared_ptr<ValidationLog> validation_log_ = std::make_shared<ValidationLog>();
@@ -95,6 +101,8 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     VkPipelineCache pipeline_cache_ = VK_NULL_HANDLE;
+    std::filesystem::path pipeline_cache_file_;
+    std::size_t pipeline_cache_loaded_bytes_ = 0;
     std::uint32_t queue_family_ = 0;
 
     VkPhysicalDeviceProperties properties_{};

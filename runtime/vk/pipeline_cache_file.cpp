@@ -1,0 +1,72 @@
+#include "vk/pipeline_cache_file.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace fg::vk {
+
+namespace {
+
+std::filesystem::path env_path(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value ? std::filesystem::path(value) : std::filesystem::path();
+}
+
+}  // namespace
+
+std::filesystem::path user_pipeline_cache_file() {
+    std::filesystem::path folder = env_path("FG_PIPELINE_CACHE");
+    if (folder == "off") return {};
+    if (folder.empty()) {
+        if (auto xdg = env_path("XDG_CACHE_HOME"); !xdg.empty()) folder = xdg / "fractograph";
+        else if (auto home = env_path("HOME"); !home.empty()) folder = home / ".cache" / "fractograph";
+        else return {};
+    }
+    return folder / "pipelines.bin";
+}
+
+bool pipeline_cache_fits(std::span<const std::byte> data, const VkPhysicalDeviceProperties& device) {
+    VkPipelineCacheHeaderVersionOne header{};
+    if (data.size() < sizeof(header)) return false;
+    std::memcpy(&header, data.data(), sizeof(header));
+    return header.headerSize >= sizeof(header) && header.headerSize <= data.size() &&
+           header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE && header.vendorID == device.vendorID &&
+           header.deviceID == device.deviceID &&
+           std::memcmp(header.pipelineCacheUUID, device.pipelineCacheUUID, VK_UUID_SIZE) == 0;
+}
+
+std::vector<std::byte> read_pipeline_cache(const std::filesystem::path& file, const VkPhysicalDeviceProperties& device) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return {};
+    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::byte> data(bytes.size());
+    std::memcpy(data.data(), bytes.data(), bytes.size());
+    return pipeline_cache_fits(data, device) ? data : std::vector<std::byte>{};
+}
+
+bool write_pipeline_cache(const std::filesystem::path& file, std::span<const std::byte> data) {
+    std::error_code error;
+    std::filesystem::create_directories(file.parent_path(), error);
+    // The process id keeps two writers from sharing one temporary file.
+    std::filesystem::path temporary = file;
+    temporary += ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
+        if (!out.flush()) {
+            std::filesystem::remove(temporary, error);
+            return false;
+        }
+    }
+    std::filesystem::rename(temporary, file, error);
+    if (!error) return true;
+    std::filesystem::remove(temporary, error);
+    return false;
+}
+
+}  // namespace fg::vk
