@@ -16,6 +16,7 @@
 #include "locomotion/collision_witness.h"
 #include "locomotion/viewer_step.h"
 #include "pack/pack_reader.h"
+#include "vk/pipeline_cache_file.h"
 #include "vk/vulkan_error.h"
 #include "xr/controller_actions.h"
 #include "xr/depth_layer.h"
@@ -537,6 +538,7 @@ int play_xr(const XrPlayOptions& o) {
         co.require_timestamps = false;
         co.shader_float64 = true;   // where supported: packs of precision "double" need it
         co.hooks = vulkan_creation_hooks(instance);
+        co.pipeline_cache_file = vk::user_pipeline_cache_file();
         std::size_t vk_errors = 0;
         int rc = 0;
         {

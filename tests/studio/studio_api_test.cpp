@@ -174,6 +174,25 @@ TEST_F(StudioApiTest, AParameterChangesTheFrameWithoutARecompile) {
     EXPECT_EQ(session->compiles(), compiles);
 }
 
+TEST_F(StudioApiTest, AnEditRecompilesOnlyThePassItChangedAndAnExportIsTheWholeOptimisedPack) {
+    auto g = graph("mandelbulb.json");
+    ASSERT_TRUE(compiled(g)["ok"]);
+    for (auto& node : g["nodes"])
+        if (node["id"] == "tone") node["inputs"]["s"] = 0.6123;   // a value no other test compiles
+    auto state = compiled(g);
+    ASSERT_TRUE(state["ok"]) << state;
+    // Of the passes the preview plays, only shade evaluates the colour.
+    EXPECT_EQ(state["passes_compiled"], 1) << state;
+    EXPECT_EQ(frame({}).substr(0, 8), "\x89PNG\r\n\x1a\n");
+
+    post("/api/export", {{"path", "edited.fgpack"}, {"graph", g}});
+    Diagnostics diag;
+    auto full = compile_graph(g.dump(), NodeLibrary::builtin(), {}, diag);
+    ASSERT_TRUE(full) << diag.format();
+    const auto bytes = pack_bytes(*full);
+    EXPECT_EQ(read(work / "folder" / "edited.fgpack"), std::string(bytes.begin(), bytes.end()));
+}
+
 TEST_F(StudioApiTest, ATypeErrorNamesItsNodeAndPortAndTheLastGoodPackKeepsPlaying) {
     ASSERT_TRUE(compiled(graph("mandelbulb.json"))["ok"]);
     std::string good_revision, revision;
