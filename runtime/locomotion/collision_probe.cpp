@@ -34,7 +34,7 @@ std::vector<std::byte> params_block(const PackManifest& m) {
 
 }  // namespace
 
-CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(ctx) {
+CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack, PipelineStore* pipelines) : ctx_(ctx) {
     const ManifestPass* pass = pack.manifest.find_pass("probe");
     if (!pass) throw std::runtime_error("the pack has no probe pass: recompile it with this fgc");
     std::vector<vk::DescriptorBinding> bindings;
@@ -45,10 +45,10 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
         sizes[uniform ? 0 : 1].descriptorCount += static_cast<std::uint32_t>(kSlots);
     }
     std::erase_if(sizes, [](const VkDescriptorPoolSize& s) { return s.descriptorCount == 0; });
-    layout_ = std::make_unique<vk::DescriptorSetLayout>(ctx, bindings);
-    pipeline_ = std::make_unique<vk::ComputePipeline>(ctx, pack.spirv.at("probe"),
-                                                      std::vector<VkDescriptorSetLayout>{layout_->handle()},
-                                                      pass->push_constant_size, specialization_for(pack.manifest, *pass, {}, false));
+    const auto& spirv = pack.spirv.at("probe");
+    const auto spec = specialization_for(pack.manifest, *pass, {}, false);
+    kept_ = pipelines ? pipelines->get(ctx, spirv, bindings, pass->push_constant_size, spec)
+                      : build_pipeline(ctx, spirv, bindings, pass->push_constant_size, spec);
     if (pass->push_constant_size != sizeof(ProbePush))
         throw std::runtime_error(fmt::format("the pack's probe pass takes {} bytes of push constants, this runtime pushes {}: "
                                              "recompile the pack with this fgc",
@@ -91,7 +91,7 @@ CollisionProbe::CollisionProbe(const vk::Context& ctx, const Pack& pack) : ctx_(
         vk::check(vkAllocateCommandBuffers(ctx.device(), &ai, &slot.cmd), "vkAllocateCommandBuffers");
         VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         vk::check(vkCreateFence(ctx.device(), &fi, nullptr, &slot.fence), "vkCreateFence");
-        slot.set = pool_->allocate(*layout_);
+        slot.set = pool_->allocate(kept_->layout);
         for (const auto& b : pass->bindings) {
             if (b.name == "FgFrame") vk::write_uniform_buffer(ctx, slot.set, b.binding, *slot.frame);
             else if (b.name == "FgScene") vk::write_uniform_buffer(ctx, slot.set, b.binding, *scene_);
@@ -145,7 +145,7 @@ std::uint64_t CollisionProbe::submit(const std::vector<glm::dvec3>& points) {
     vk::check(vkBeginCommandBuffer(free->cmd, &bi), "vkBeginCommandBuffer");
     vk::memory_barrier(free->cmd, vk::access::host_write, vk::access::compute_read);
     const ProbePush push{static_cast<std::int32_t>(n), static_cast<float>(normal_step_)};
-    pipeline_->dispatch(free->cmd, free->set, {1, 1, 1},
+    kept_->pipeline.dispatch(free->cmd, free->set, {1, 1, 1},
                         std::span<const std::byte>(reinterpret_cast<const std::byte*>(&push), sizeof push));
     vk::compute_to_host_barrier(free->cmd);
     vk::check(vkEndCommandBuffer(free->cmd), "vkEndCommandBuffer");

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "frame/pipeline_store.h"
 #include "pack/pack_reader.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
@@ -34,7 +35,8 @@ public:
     static constexpr std::size_t kSlots = 3;
     static constexpr std::size_t kMaxPoints = 8;
 
-    CollisionProbe(const vk::Context& ctx, const Pack& pack);
+    // With `pipelines`, the probe's pipeline is the one built before for the same SPIR-V.
+    CollisionProbe(const vk::Context& ctx, const Pack& pack, PipelineStore* pipelines = nullptr);
     ~CollisionProbe();
     CollisionProbe(const CollisionProbe&) = delete;
     CollisionProbe& operator=(const CollisionProbe&) = delete;
@@ -62,8 +64,7 @@ private:
     ProbeResult collect(Slot& slot);
 
     const vk::Context& ctx_;
-    std::unique_ptr<vk::DescriptorSetLayout> layout_;
-    std::unique_ptr<vk::ComputePipeline> pipeline_;
+    std::shared_ptr<const KeptPipeline> kept_;   // set layout and pipeline
     std::unique_ptr<vk::DescriptorPool> pool_;
     std::unique_ptr<vk::Buffer> scene_, params_;
     VkCommandPool command_pool_ = VK_NULL_HANDLE;

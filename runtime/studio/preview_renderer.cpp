@@ -28,7 +28,7 @@ std::unique_ptr<PreviewScene> prepare_scene(const vk::Context& ctx, Pack pack, s
     stereo.world_scale = scene->pack->manifest.scene.world_scale;
     scene->renderer = std::make_unique<HeadlessRenderer>(ctx, *scene->pack, preview_frame_settings(eye_size, true), stereo,
                                                          pipelines);
-    if (with_probe) scene->probe = std::make_unique<CollisionProbe>(ctx, *scene->pack);
+    if (with_probe) scene->probe = std::make_unique<CollisionProbe>(ctx, *scene->pack, pipelines);
     scene->revision = revision;
     return scene;
 }

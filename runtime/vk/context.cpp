@@ -305,17 +305,22 @@ void Context::create_pipeline_cache() {
     pipeline_cache_loaded_bytes_ = saved.size();
 }
 
-// Written only when it holds something new; a cache that cannot be saved costs the next run time,
-// never this one an error.
+// Written only when its size changed (a driver's cache grows with every new pipeline); a cache
+// that cannot be saved costs the next run time, never this one an error.
 void Context::save_pipeline_cache() noexcept {
     if (pipeline_cache_file_.empty() || !pipeline_cache_) return;
-    std::size_t size = 0;
-    if (vkGetPipelineCacheData(device_, pipeline_cache_, &size, nullptr) != VK_SUCCESS || size == 0) return;
-    if (size == pipeline_cache_loaded_bytes_ && std::filesystem::exists(pipeline_cache_file_)) return;
-    std::vector<std::byte> data(size);
-    if (vkGetPipelineCacheData(device_, pipeline_cache_, &size, data.data()) != VK_SUCCESS) return;
-    data.resize(size);
-    write_pipeline_cache(pipeline_cache_file_, data);
+    try {
+        std::size_t size = 0;
+        if (vkGetPipelineCacheData(device_, pipeline_cache_, &size, nullptr) != VK_SUCCESS || size == 0) return;
+        std::error_code error;
+        if (size == pipeline_cache_loaded_bytes_ && std::filesystem::exists(pipeline_cache_file_, error)) return;
+        std::vector<std::byte> data(size);
+        if (vkGetPipelineCacheData(device_, pipeline_cache_, &size, data.data()) != VK_SUCCESS) return;
+        data.resize(size);
+        write_pipeline_cache(pipeline_cache_file_, data);
+    } catch (const std::exception&) {
+        // Out of memory for the copy: the next run starts without it.
+    }
 }
 
 void Context::destroy() noexcept {

@@ -5,9 +5,9 @@
 // A benchmark, not a test: prints a Markdown table for docs/studio.md.
 //   node studio/bench/latency.mjs FGPLAY GRAPH [--size 256] [--moves 60] [--edits 20]
 // The graph must have the gallery Mandelbulb's nodes `tone` (math.scale), `shift` (math.add) and
-// `palette` (palette.cosine). Every edit leaves a graph not seen before: each round of three edits
-// starts with a new value of tone's literal, so no edit can be answered from the server's cache of
-// compiled passes unless the pass it changes did not change.
+// `palette` (palette.cosine). Every edit leaves a graph not seen before, in this run or an earlier
+// one: each round of three edits starts with a new value of tone's literal, counted from a random
+// start, so neither the server's caches nor Mesa's shader cache can answer for the pass it changes.
 import { spawn } from "node:child_process";
 
 const [fgplay, graphPath, ...rest] = process.argv.slice(2);
@@ -74,8 +74,9 @@ const compilesAfter = (await frame({})).compiles;
 // One round: a literal (baked into the code, so it recompiles), a wire moved (shift.b between the
 // hue parameter and the trap's x), a node added in front of the palette.
 const node = (g, id) => g.nodes.find((n) => n.id === id);
+const start = 0.3 + Math.round(Math.random() * 100000) / 500000;
 const kinds = {
-  literal: (g, round) => { node(g, "tone").inputs.s = 0.5 + 0.001 * (round + 1); },
+  literal: (g, round) => { node(g, "tone").inputs.s = start + 0.001 * (round + 1); },
   wire: (g) => { const shift = node(g, "shift"); shift.inputs.b = shift.inputs.b === "$hue" ? "trap.x" : "$hue"; },
   "node added": (g, round) => {
     const palette = node(g, "palette");
