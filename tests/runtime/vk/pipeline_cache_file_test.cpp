@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_dir.h"
 #include "test_shaders.h"
 #include "vk/compute_pipeline.h"
 #include "vk/context.h"
@@ -21,14 +22,6 @@ using test::ScopedEnv;
 
 class PipelineCacheFileTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        folder_ = std::filesystem::temp_directory_path() /
-                  ("fg_pipeline_cache_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        std::filesystem::remove_all(folder_);
-        std::filesystem::create_directories(folder_);
-    }
-    void TearDown() override { std::filesystem::remove_all(folder_); }
-
     std::filesystem::path file() const { return folder_ / "pipelines.bin"; }
 
     // A context on the cache file that builds one pipeline, then ends (and saves the cache).
@@ -55,7 +48,8 @@ protected:
                                                       static_cast<std::streamsize>(bytes.size()));
     }
 
-    std::filesystem::path folder_;
+    fg::test::ScratchDir scratch_{"fg_pipeline_cache"};
+    const std::filesystem::path& folder_ = scratch_.path();
 };
 
 TEST_F(PipelineCacheFileTest, AContextSavesItsCacheForTheDeviceAndTheNextOneReadsIt) {
