@@ -80,6 +80,8 @@ public:
     std::optional<ProbeHit> probe(std::uint32_t x, std::uint32_t y);
 
     std::uint32_t eye_size() const { return size_; }
+    // Pipelines built for the scenes so far (the others were reused from the scene before).
+    std::uint64_t pipelines_built() const { return pipelines_.built(); }
     std::uint64_t frames() const;
     // The scene's start camera, for the page's orbit.
     std::optional<std::pair<glm::dvec3, glm::dvec3>> scene_camera() const;

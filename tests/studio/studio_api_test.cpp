@@ -179,10 +179,13 @@ TEST_F(StudioApiTest, AnEditRecompilesOnlyThePassItChangedAndAnExportIsTheWholeO
     ASSERT_TRUE(compiled(g)["ok"]);
     for (auto& node : g["nodes"])
         if (node["id"] == "tone") node["inputs"]["s"] = 0.6123;   // a value no other test compiles
+    const auto pipelines = session->preview().pipelines_built();
     auto state = compiled(g);
     ASSERT_TRUE(state["ok"]) << state;
-    // Of the passes the preview plays, only shade evaluates the colour.
+    // Of the passes the preview plays, only shade evaluates the colour: one pass compiled, and one
+    // pipeline built (both eyes' shade passes share it; the marching passes' and the probe's are kept).
     EXPECT_EQ(state["passes_compiled"], 1) << state;
+    EXPECT_EQ(session->preview().pipelines_built() - pipelines, 1u);
     EXPECT_EQ(frame({}).substr(0, 8), "\x89PNG\r\n\x1a\n");
 
     post("/api/export", {{"path", "edited.fgpack"}, {"graph", g}});
