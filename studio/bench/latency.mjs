@@ -115,6 +115,6 @@ console.log(row(`slider move -> new frame (${size}² per eye)`, stats(slider),
 for (const [kind, m] of Object.entries(measured)) {
   const median = (xs) => stats(xs).median;
   console.log(row(`graph edit (${kind}) -> first new frame`, stats(m.total),
-    `compile ${ms(median(m.compile))} (glslang ${ms(median(m.glslang))}, spirv-opt ${ms(median(m.optimize))} CPU over ` +
+    `compile ${ms(median(m.compile))} (glslang ${ms(median(m.glslang))}, spirv-opt and validation ${ms(median(m.optimize))} CPU over ` +
     `${Number.isNaN(median(m.passes)) ? "all" : median(m.passes)} passes compiled), pipelines ${ms(median(m.pipelines))}, first frame ${ms(median(m.frame))}`));
 }
