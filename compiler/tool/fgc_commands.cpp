@@ -17,8 +17,6 @@ std::span<const EmbeddedFile> embedded_node_files();
 
 namespace fg::fgc {
 
-namespace {
-
 std::optional<std::string> read_text(const std::string& path, Diagnostics& diag) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -45,6 +43,8 @@ int report(const Diagnostics& diag, const std::string& file) {
     }
     return 0;
 }
+
+namespace {
 
 std::string join(const std::vector<std::string>& xs, const char* sep = ", ") {
     std::string s;
