@@ -34,6 +34,9 @@ ExportEstimate estimate_export(const ExportField& field, const NarrowBandSetting
     e.leaves = static_cast<double>(b.leaves) * growth;
     e.bytes = kBaseBytes + e.leaves * kLeafBytes * (mesh ? kMeshFactor : 1.0);
     e.seconds = b.seconds * growth;
+    // At least 1 % of the band inside: a solid's band is about half inside, the thinnest gallery
+    // fractal's 6 %; an estimate without inside still rounds below zero at a few voxels.
+    e.has_inside = static_cast<double>(a.inside_voxels + b.inside_voxels) >= 0.01 * static_cast<double>(a.active_voxels + b.active_voxels);
     return e;
 }
 

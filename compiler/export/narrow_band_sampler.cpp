@@ -34,6 +34,7 @@ public:
 
     std::vector<Leaf*>& leaves() { return leaves_; }
     std::uint64_t evaluations() const { return evaluations_; }
+    std::uint64_t inside() const { return inside_; }
 
 private:
     double at(double i, double j, double k) {
@@ -83,6 +84,7 @@ private:
         if (std::abs(d) < band_) {
             active_.set(n);
             any_active_ = true;
+            inside_ += d < 0.0;
         }
     }
 
@@ -96,7 +98,7 @@ private:
     double h_, band_;
     double last_ = 0.0;
     std::vector<Leaf*> leaves_;
-    std::uint64_t evaluations_ = 0;
+    std::uint64_t evaluations_ = 0, inside_ = 0;
     float values_[Leaf::SIZE];
     std::bitset<Leaf::SIZE> active_;
     bool any_active_ = false;
@@ -160,16 +162,18 @@ openvdb::FloatGrid::Ptr sample_narrow_band(const ExportField& field, const Narro
     auto grid = openvdb::FloatGrid::create(static_cast<float>(band));
     grid->setTransform(openvdb::math::Transform::createLinearTransform(s.voxel_size));
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
-    std::uint64_t evaluations = 0;
+    std::uint64_t evaluations = 0, inside = 0;
     for (auto& sampler : samplers) {
         for (Leaf* leaf : sampler.leaves()) grid->tree().addLeaf(leaf);   // the tree owns it now
         evaluations += sampler.evaluations();
+        inside += sampler.inside();
     }
     // Inactive voxels and tiles between the leaves take the sign of their side of the surface.
     openvdb::tools::signedFloodFill(grid->tree());
     if (stats) {
         stats->evaluations = evaluations;
         stats->active_voxels = grid->activeVoxelCount();
+        stats->inside_voxels = inside;
         stats->leaves = grid->tree().leafCount();
         stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }

@@ -51,7 +51,9 @@ struct ExportOptions {
     int resolution = 256;
     double half_width = 3.0;             // narrow band, voxels each side of the surface
     double adaptivity = 0.0;
-    double offset = 0.0;                 // > 0 grows the shape by this distance
+    // > 0 grows the shape by this distance; unset: 0 where the distance has an inside (negative
+    // values), else half a voxel (the renderer's hit threshold with a voxel for a pixel).
+    std::optional<double> offset;
     bool colors = false;                 // PLY vertex colours from the graph's albedo
     int threads = 2;
     std::uint64_t max_memory = 0;        // bytes; 0: half the machine's memory

@@ -206,7 +206,7 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     // The march steps d * step_factor / L; the same factor makes the estimate a distance that
     // does not overestimate, which the narrow band's skipping relies on.
     const double scale = ir->scene.step_factor / analyse_lipschitz(*ir, diag).bound;
-    const ExportField field(*ev, scale, o.offset, *box);
+    ExportField field(*ev, scale, o.offset.value_or(0.0), *box);
     const glm::dvec3 size = box->size();
     const double longest = std::max(size.x, std::max(size.y, size.z));
     settings.voxel_size = o.voxel_size > 0.0 ? o.voxel_size : longest / o.resolution;
@@ -225,6 +225,13 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
                                "--box, or split the box into --shard I/N slabs",
                                resolution, bytes_text(e.bytes), bytes_text(static_cast<double>(limit))));
         return report(diag, graph);
+    }
+    if (!o.offset && !e.has_inside) {
+        field = ExportField(*ev, scale, 0.5 * settings.voxel_size, *box);
+        fmt::print("{}: the distance has no inside (under 1 % of the band is negative: it measures the distance to the set): the "
+                   "surface is taken where it falls under half a voxel, {:g}, as the renderer's hit threshold takes it "
+                   "under a pixel's footprint (--offset to choose)\n",
+                   graph, field.offset());
     }
     if (o.dry_run) return 0;
 
