@@ -15,9 +15,9 @@ BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config)
 LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev spirv-cross libvulkan-dev
   mesa-vulkan-drivers vulkan-tools vulkan-validationlayers libglm-dev nlohmann-json3-dev libopenxr-dev
   libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libstb-dev libcli11-dev libfmt-dev
-  libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev libopenexr-dev)
+  libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev libopenexr-dev libopenvdb-dev libtbb-dev)
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib python3-jsonschema clang
-  libclang-rt-14-dev chromium slurm-wlm munge)
+  libclang-rt-14-dev chromium slurm-wlm munge python3-openvdb python3-vtk9 admesh)
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
 

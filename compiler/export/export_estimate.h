@@ -1,8 +1,9 @@
 #pragma once
-// What an export will cost, told before it starts: two pilot runs at coarse resolutions (32 and 64
-// voxels along the box's longest side, well under a second for the gallery) measure how the
-// narrow band grows as voxels shrink, N ~ (1 / voxel size)^D with D between 2 (a smooth surface)
-// and 3 (a surface that fills space), and extrapolate voxels, memory and time to the target.
+// What an export will cost, told before it starts. Pilot runs at 32, 64 and 128 voxels along the
+// box's longest side (about a second for the gallery) measure how the narrow band grows as voxels
+// halve: by 2^D, with D 2 for a smooth surface and up to 3 for one that fills space. A fractal's
+// D grows with resolution as finer detail appears, so each further halving to the target takes
+// the last D plus its last increase (at most 3): voxels, memory and time follow.
 #include "export_field.h"
 #include "narrow_band_sampler.h"
 
@@ -14,7 +15,7 @@ struct ExportEstimate {
     double leaves = 0.0;
     double bytes = 0.0;           // peak memory of the process
     double seconds = 0.0;         // sampling time with the target's threads
-    double dimension = 2.0;       // the measured growth exponent D
+    double dimension = 2.0;       // D over the last pilot halving
     // Whether the distance goes negative (inside the shape). Many fractals' estimates measure the
     // distance to the set and never do: they have no zero crossing to mesh.
     bool has_inside = false;

@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <numeric>
 #include <thread>
-#include <unordered_map>
+#include <tuple>
 
-#define GLM_ENABLE_EXPERIMENTAL
-#include <glm/gtx/hash.hpp>
-
-#include <openvdb/tools/GridOperators.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
@@ -22,16 +19,20 @@ TriangleMesh mesh_level_set(const openvdb::FloatGrid& grid, double adaptivity) {
 
     // volumeToMesh can emit one position under two indices where surface sheets meet in a voxel:
     // welded into one vertex, so that edges are shared by index as they are by position (what
-    // slicers and mesh checkers look at).
+    // slicers and mesh checkers look at). Sorting indices by position costs 8 bytes a point.
     TriangleMesh mesh;
-    std::vector<unsigned> vertex_of(points.size());
-    std::unordered_map<glm::vec3, unsigned> welded;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::vec3 p(points[i].x(), points[i].y(), points[i].z());
-        auto [it, added] = welded.try_emplace(p, static_cast<unsigned>(mesh.positions.size()));
-        if (added) mesh.positions.push_back(p);
-        vertex_of[i] = it->second;
+    auto key = [&](unsigned i) { return std::tie(points[i].x(), points[i].y(), points[i].z()); };
+    std::vector<unsigned> order(points.size()), vertex_of(points.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) { return key(a) < key(b); });
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        if (n == 0 || key(order[n]) != key(order[n - 1])) {
+            const auto& p = points[order[n]];
+            mesh.positions.emplace_back(p.x(), p.y(), p.z());
+        }
+        vertex_of[order[n]] = static_cast<unsigned>(mesh.positions.size() - 1);
     }
+    std::vector<unsigned>().swap(order);
     // volumeToMesh winds its polygons clockwise seen from outside: reversed here. Triangles that
     // collapse to an edge are left out (printers and mesh checkers reject them).
     auto add = [&](unsigned a, unsigned b, unsigned c) {
@@ -44,14 +45,17 @@ TriangleMesh mesh_level_set(const openvdb::FloatGrid& grid, double adaptivity) {
         add(q[0], q[2], q[3]);
     }
 
-    // The level set's gradient at each vertex is the surface's outward normal there.
-    auto gradient = openvdb::tools::gradient(grid);
-    openvdb::tools::GridSampler<openvdb::Vec3SGrid, openvdb::tools::BoxSampler> sampler(*gradient);
+    // The level set's gradient at each vertex is the surface's outward normal there: central
+    // differences of the interpolated level set (no gradient grid: that would cost 3 floats a voxel).
+    openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sampler(grid);
+    const double h = grid.voxelSize()[0];
     mesh.normals.reserve(mesh.positions.size());
     for (const auto& p : mesh.positions) {
-        openvdb::Vec3s g = sampler.wsSample(openvdb::Vec3d(p.x, p.y, p.z));
-        const float length = g.length();
-        mesh.normals.push_back(length > 0.0f ? glm::vec3(g.x(), g.y(), g.z()) / length : glm::vec3(0.0f, 1.0f, 0.0f));
+        const openvdb::Vec3d q(p.x, p.y, p.z);
+        auto diff = [&](const openvdb::Vec3d& e) { return sampler.wsSample(q + e) - sampler.wsSample(q - e); };
+        const glm::vec3 g(diff({h, 0, 0}), diff({0, h, 0}), diff({0, 0, h}));
+        const float length = glm::length(g);
+        mesh.normals.push_back(length > 0.0f ? g / length : glm::vec3(0.0f, 1.0f, 0.0f));
     }
     return mesh;
 }

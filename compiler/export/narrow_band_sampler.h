@@ -25,7 +25,7 @@ struct NarrowBandStats {
     std::uint64_t evaluations = 0;
     std::uint64_t active_voxels = 0;
     std::uint64_t inside_voxels = 0;      // active voxels with a negative distance
-    std::size_t leaves = 0;
+    std::uint64_t leaves = 0;
     double seconds = 0.0;
 };
 

@@ -3,7 +3,7 @@
 Python reader (pyopenvdb), the meshes by VTK's PLY, OBJ and STL readers (volume, area, boundary
 and non-manifold edges) and the STL by admesh, the mesh checker slicers' users know.
 
-usage: check_export.py CASE --fgc FGC --source SOURCE_DIR --work WORK_DIR
+usage: check_export.py CASE --fgc FGC --source SOURCE_DIR --work WORK_DIR (the test's own folder)
 CASE: shapes | gallery | shards | bad_input
 """
 import argparse
@@ -245,13 +245,16 @@ def main():
     args = parser.parse_args()
     if not shutil.which("admesh"):
         raise SystemExit("admesh not found (Debian: admesh; scripts/fractograph.sh installs the test packages)")
-    args.work = os.path.join(args.work, args.case)
+    # The test's own folder, emptied at the start; removed when it passes unless
+    # FG_KEEP_TEST_FILES=1 (docs/testing.md), kept to look at when it fails.
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
     globals()[args.case](args)
     if failures:
-        print(f"{len(failures)} failure(s)")
+        print(f"{len(failures)} failure(s); the files are in {args.work}")
         sys.exit(1)
+    if os.environ.get("FG_KEEP_TEST_FILES") != "1":
+        shutil.rmtree(args.work)
     print("ok")
 
 

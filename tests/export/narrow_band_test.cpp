@@ -4,9 +4,9 @@
 
 #include <cmath>
 #include <fmt/format.h>
-#include <filesystem>
 
 #include "../compiler/test_support.h"
+#include "scratch_dir.h"
 #include "export/level_set_files.h"
 #include "export/narrow_band_sampler.h"
 
@@ -65,8 +65,7 @@ TEST(NarrowBand, shards_merged_are_the_whole_run_read_back_from_files) {
     NarrowBandSettings s;
     s.voxel_size = 2.2 / 100;   // four columns of blocks: two each
     auto whole = sample_narrow_band(field, s);
-    const auto folder = std::filesystem::temp_directory_path() / "fg_narrow_band_test";
-    std::filesystem::create_directories(folder);
+    const test::ScratchDir folder("fg_narrow_band");
     std::vector<openvdb::FloatGrid::Ptr> shards;
     std::vector<std::string> names;
     Diagnostics diag;
@@ -93,7 +92,6 @@ TEST(NarrowBand, shards_merged_are_the_whole_run_read_back_from_files) {
                 const openvdb::Coord c(i, j, k);
                 ASSERT_EQ(acc.getValue(c) > 0.0f, whole_acc.getValue(c) > 0.0f) << c;
             }
-    std::filesystem::remove_all(folder);
 }
 
 }  // namespace
