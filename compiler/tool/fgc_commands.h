@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include "common/diagnostics.h"
+#include "cpu/cpu_evaluator.h"
 #include "graph/node_library.h"
 
 namespace fg::fgc {
@@ -20,6 +23,16 @@ struct Common {
 std::optional<std::string> read_text(const std::string& path, Diagnostics& diag);
 NodeLibrary library_for(const Common& c, Diagnostics& diag);
 int report(const Diagnostics& diag, const std::string& file);
+
+// A graph's IR and its CPU twin with the node library, on the heap together (the twin points into
+// the IR, the IR into the library); nullopt with the diagnostics when the graph does not load or a
+// node has no twin.
+struct CpuScene {
+    std::unique_ptr<NodeLibrary> library;
+    std::unique_ptr<IrGraph> ir;
+    std::optional<CpuEvaluator> evaluator;
+};
+std::optional<CpuScene> load_cpu_scene(const Common& c, const std::string& graph, Diagnostics& diag);
 
 int check(const Common& c, const std::string& graph);
 // precision: "" keeps the graph's scene.precision, else "float" or "double".

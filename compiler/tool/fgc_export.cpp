@@ -2,6 +2,7 @@
 // band, and meshes of it (PLY, OBJ, STL); or the shards of a job array merged into one.
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -181,6 +182,8 @@ int merge(const ExportOptions& o) {
 }  // namespace
 
 int export_level_set(const Common& c, const std::string& graph, const ExportOptions& o) {
+    // Each line as it happens, in order with the progress bar on stderr, also into a batch log.
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
     if (!o.merge.empty()) return merge(o);
     Diagnostics diag;
     if (graph.empty()) {
@@ -193,13 +196,10 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     const std::string vdb = o.output.empty() ? std::filesystem::path(graph).replace_extension(".vdb").string() : o.output;
     if (!parse_shard(o.shard, settings, diag) || !check_outputs(o, vdb, diag)) return report(diag, graph);
 
-    auto lib = library_for(c, diag);
-    auto text = read_text(graph, diag);
-    if (!text) return report(diag, graph);
-    auto ir = load_and_lower(*text, lib, diag);
-    if (!ir) return report(diag, graph);
-    auto ev = CpuEvaluator::create(*ir, diag);
-    if (!ev) return report(diag, graph);
+    auto scene = load_cpu_scene(c, graph, diag);
+    if (!scene) return report(diag, graph);
+    const IrGraph* ir = scene->ir.get();
+    CpuEvaluator* ev = &*scene->evaluator;
     auto params = apply_params(*ir, *ev, o.params, diag);
     auto box = export_box(*ir, o.box, diag);
     if (!params || !box) return report(diag, graph);
