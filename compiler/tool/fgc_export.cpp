@@ -210,6 +210,13 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     const glm::dvec3 size = box->size();
     const double longest = std::max(size.x, std::max(size.y, size.z));
     settings.voxel_size = o.voxel_size > 0.0 ? o.voxel_size : longest / o.resolution;
+    // OpenVDB's voxel coordinates are 32-bit: far beyond any memory, but a number still to refuse.
+    const double farthest = std::max(glm::length(box->min), glm::length(box->max)) / settings.voxel_size;
+    if (farthest > 1e9) {
+        diag.error(fmt::format("--voxel-size {:g}: the box reaches {:.3g} voxels from the origin, beyond OpenVDB's 32-bit "
+                               "coordinates", settings.voxel_size, farthest));
+        return report(diag, graph);
+    }
 
     const ExportEstimate e = estimate_export(field, settings, !o.meshes.empty());
     const std::uint64_t limit = o.max_memory ? o.max_memory : half_the_memory();

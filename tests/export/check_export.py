@@ -216,6 +216,7 @@ def bad_input(args):
         ([unbounded, "-o", out, "--box", "1,0,0,0,1,1"], "--box 1,0,0,0,1,1"),
         ([sphere, "-o", out, "--voxel-size", "0.00001", "--max-memory", "2G"], "--voxel-size 1e-05"),
         ([sphere, "-o", out, "--resolution", "100000", "--max-memory", "2G"], "over --max-memory 2.0 GiB"),
+        ([sphere, "-o", out, "--voxel-size", "1e-10", "--max-memory", "1000T"], "beyond OpenVDB's 32-bit coordinates"),
         ([sphere, "-o", "/etc/hostname/out.vdb"], "-o /etc/hostname/out.vdb: cannot write there"),
         ([sphere, "-o", out, "--mesh", os.path.join(args.work, "no_such_folder/out.stl")], "no_such_folder/out.stl: cannot write there"),
         ([sphere, "-o", out, "--mesh", os.path.join(args.work, "out.fbx")], "--mesh " + os.path.join(args.work, "out.fbx") + ": unknown mesh format"),
