@@ -153,6 +153,8 @@ def gallery(args):
         extra = ["--box", BOXES[name]] if name in BOXES else []
         if name == "mandelbulb":
             extra.append("--colors")
+        if name == "menger_twisted":
+            extra += ["--adaptivity", "0.3"]   # merged polygons close as well
         stdout = export_ok(args, os.path.join(folder, name + ".json"), "--resolution", "48", "-o", out + ".vdb",
                            "--mesh", out + ".stl", "--mesh", out + ".ply", "--quiet", *extra)
         check_vdb(out + ".vdb", stdout)
