@@ -17,8 +17,6 @@ std::span<const EmbeddedFile> embedded_node_files();
 
 namespace fg::fgc {
 
-namespace {
-
 std::optional<std::string> read_text(const std::string& path, Diagnostics& diag) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -45,6 +43,8 @@ int report(const Diagnostics& diag, const std::string& file) {
     }
     return 0;
 }
+
+namespace {
 
 std::string join(const std::vector<std::string>& xs, const char* sep = ", ") {
     std::string s;
@@ -279,18 +279,25 @@ int nodes(const Common& c, const std::string& type, bool markdown) {
     return 0;
 }
 
+std::optional<CpuScene> load_cpu_scene(const Common& c, const std::string& graph, Diagnostics& diag) {
+    auto lib = std::make_unique<NodeLibrary>(library_for(c, diag));
+    auto text = read_text(graph, diag);
+    if (!text) return std::nullopt;
+    auto ir = load_and_lower(*text, *lib, diag);
+    if (!ir) return std::nullopt;
+    CpuScene scene{std::move(lib), std::make_unique<IrGraph>(std::move(*ir)), std::nullopt};
+    scene.evaluator = CpuEvaluator::create(*scene.ir, diag);
+    if (!scene.evaluator) return std::nullopt;
+    return scene;
+}
+
 int probe(const Common& c, const std::string& graph, double x, double y, double z) {
     Diagnostics diag;
-    auto lib = library_for(c, diag);
-    auto text = read_text(graph, diag);
-    if (!text) return report(diag, graph);
-    auto ir = load_and_lower(*text, lib, diag);
-    if (!ir) return report(diag, graph);
-    auto ev = CpuEvaluator::create(*ir, diag);
-    if (!ev) return report(diag, graph);
+    auto scene = load_cpu_scene(c, graph, diag);
+    if (!scene) return report(diag, graph);
     glm::dvec3 p(x, y, z);
-    double d = ev->distance(p);
-    glm::dvec3 n = ev->normal(p);
+    double d = scene->evaluator->distance(p);
+    glm::dvec3 n = scene->evaluator->normal(p);
     fmt::print("distance {:.17g}\nnormal   {:.9f} {:.9f} {:.9f}\n", d, n.x, n.y, n.z);
     return 0;
 }

@@ -1,7 +1,8 @@
 #pragma once
-// Progress of an offline render on stderr: frames (or samples) done of the total, their rate and
-// the time left, and a note (adaptive sampling's noise). On a terminal one line redraws itself; in a batch log (Slurm, kubectl logs) each
-// update is its own line, at most one every few seconds.
+// Progress of long work on stderr (an offline render's frames or samples, an export's blocks):
+// done of the total, their rate and the time left, and a note (adaptive sampling's noise). On a
+// terminal one line redraws itself; in a batch log (Slurm, kubectl logs) each update is its own
+// line, at most one every few seconds.
 #include <chrono>
 #include <cstdio>
 #include <string>

@@ -1,0 +1,79 @@
+#include "level_set_mesh.h"
+
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+#include <thread>
+#include <tuple>
+
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/VolumeToMesh.h>
+
+namespace fg {
+
+TriangleMesh mesh_level_set(const openvdb::FloatGrid& grid, double adaptivity) {
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec3I> triangles;
+    std::vector<openvdb::Vec4I> quads;
+    openvdb::tools::volumeToMesh(grid, points, triangles, quads, 0.0, adaptivity);
+
+    // volumeToMesh can emit one position under two indices where surface sheets meet in a voxel:
+    // welded into one vertex, so that edges are shared by index as they are by position (what
+    // slicers and mesh checkers look at). Sorting indices by position costs 8 bytes a point.
+    TriangleMesh mesh;
+    auto key = [&](unsigned i) { return std::tie(points[i].x(), points[i].y(), points[i].z()); };
+    std::vector<unsigned> order(points.size()), vertex_of(points.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) { return key(a) < key(b); });
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        if (n == 0 || key(order[n]) != key(order[n - 1])) {
+            const auto& p = points[order[n]];
+            mesh.positions.emplace_back(p.x(), p.y(), p.z());
+        }
+        vertex_of[order[n]] = static_cast<unsigned>(mesh.positions.size() - 1);
+    }
+    std::vector<unsigned>().swap(order);
+    // volumeToMesh winds its polygons clockwise seen from outside: reversed here. Triangles that
+    // collapse to an edge are left out (printers and mesh checkers reject them).
+    auto add = [&](unsigned a, unsigned b, unsigned c) {
+        a = vertex_of[a], b = vertex_of[b], c = vertex_of[c];
+        if (a != b && b != c && a != c) mesh.triangles.emplace_back(a, c, b);
+    };
+    for (const auto& t : triangles) add(t[0], t[1], t[2]);
+    for (const auto& q : quads) {
+        add(q[0], q[1], q[2]);
+        add(q[0], q[2], q[3]);
+    }
+
+    // The level set's gradient at each vertex is the surface's outward normal there: central
+    // differences of the interpolated level set (no gradient grid: that would cost 3 floats a voxel).
+    openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sampler(grid);
+    const double h = grid.voxelSize()[0];
+    mesh.normals.reserve(mesh.positions.size());
+    for (const auto& p : mesh.positions) {
+        const openvdb::Vec3d q(p.x, p.y, p.z);
+        auto diff = [&](const openvdb::Vec3d& e) { return sampler.wsSample(q + e) - sampler.wsSample(q - e); };
+        const glm::vec3 g(diff({h, 0, 0}), diff({0, h, 0}), diff({0, 0, h}));
+        const float length = glm::length(g);
+        mesh.normals.push_back(length > 0.0f ? g / length : glm::vec3(0.0f, 1.0f, 0.0f));
+    }
+    return mesh;
+}
+
+void colour_vertices(TriangleMesh& mesh, const std::function<ColourFunction()>& make_colour, int threads) {
+    mesh.colors.assign(mesh.positions.size(), glm::u8vec3(0));
+    std::atomic<std::size_t> next{0};
+    constexpr std::size_t kChunk = 1024;
+    std::vector<std::thread> workers;
+    for (int t = 0; t < std::max(1, threads); ++t)
+        workers.emplace_back([&, colour = make_colour()] {
+            for (std::size_t begin; (begin = next.fetch_add(kChunk)) < mesh.positions.size();)
+                for (std::size_t i = begin; i < std::min(begin + kChunk, mesh.positions.size()); ++i) {
+                    glm::dvec3 c = glm::clamp(colour(mesh.positions[i], mesh.normals[i]), 0.0, 1.0);
+                    mesh.colors[i] = glm::u8vec3(glm::round(c * 255.0));
+                }
+        });
+    for (auto& w : workers) w.join();
+}
+
+}  // namespace fg
