@@ -44,6 +44,7 @@ std::vector<std::byte> read_pipeline_cache(const std::filesystem::path& file, co
     std::ifstream in(file, std::ios::binary);
     if (!in) return {};
     std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.empty()) return {};   // memcpy from an empty vector's null data is undefined
     std::vector<std::byte> data(bytes.size());
     std::memcpy(data.data(), bytes.data(), bytes.size());
     return pipeline_cache_fits(data, device) ? data : std::vector<std::byte>{};
