@@ -70,21 +70,17 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<Sam
         }
         SampleProgress progress{k + 1, samples};
         if (adaptive && k + 1 >= std::max(budget.min_samples, 2u)) {
-            sampled_left = left.tiles_above(budget.noise);
-            if (right.samples() > 0) sampled_right = right.tiles_above(budget.noise);
+            std::size_t noisy_left = 0, noisy_right = 0;
+            sampled_left = left.tiles_above(budget.noise, &noisy_left);
+            if (right.samples() > 0) sampled_right = right.tiles_above(budget.noise, &noisy_right);
             const std::size_t tiles = sampled_left->active.size() * (sampled_right ? 2 : 1);
             const std::size_t sampling = sampled_left->count() + (sampled_right ? sampled_right->count() : 0);
             progress.tiles_sampling = static_cast<double>(sampling) / static_cast<double>(tiles);
-            for (const SampleAccumulator* eye : {&left, &right})
-                for (std::size_t p = 0; p < eye->counts().size(); ++p) progress.noisy_pixels += eye->noise(p) > budget.noise;
+            progress.noisy_pixels = noisy_left + noisy_right;
             renderer.set_sampled_tiles(&*sampled_left, sampled_right ? &*sampled_right : nullptr);
         }
-        std::uint64_t taken = 0, pixels = 0;
-        for (const SampleAccumulator* eye : {&left, &right}) {
-            for (std::uint32_t c : eye->counts()) taken += c;
-            pixels += eye->counts().size();
-        }
-        progress.mean_samples = static_cast<double>(taken) / static_cast<double>(std::max<std::uint64_t>(pixels, 1));
+        const std::size_t pixels = left.counts().size() + right.counts().size();
+        progress.mean_samples = static_cast<double>(left.taken() + right.taken()) / static_cast<double>(std::max<std::size_t>(pixels, 1));
         if (budget.progress) budget.progress(progress);
         if (adaptive && progress.tiles_sampling == 0.0) break;
     }

@@ -33,6 +33,7 @@ void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sample
             luma_[p] += luma;
             luma_squared_[p] += luma * luma;
             ++counts_[p];
+            ++taken_;
         }
     ++samples_;
 }
@@ -54,12 +55,17 @@ double SampleAccumulator::noise(std::size_t pixel) const {
     return std::sqrt(variance / n);
 }
 
-SampledTiles SampleAccumulator::tiles_above(double target) const {
+SampledTiles SampleAccumulator::tiles_above(double target, std::size_t* noisy_pixels) const {
     SampledTiles noisy(width_, height_);
     std::fill(noisy.active.begin(), noisy.active.end(), 0);
+    std::size_t above = 0;
     for (std::uint32_t y = 0; y < height_; ++y)
         for (std::uint32_t x = 0; x < width_; ++x)
-            if (noise(static_cast<std::size_t>(y) * width_ + x) > target) noisy.active[std::size_t(y / 8) * noisy.columns + x / 8] = 1;
+            if (noise(static_cast<std::size_t>(y) * width_ + x) > target) {
+                noisy.active[std::size_t(y / 8) * noisy.columns + x / 8] = 1;
+                ++above;
+            }
+    if (noisy_pixels) *noisy_pixels = above;
     return noisy;
 }
 

@@ -23,17 +23,19 @@ public:
     std::uint32_t samples() const { return samples_; }
     // The mean so far, sRGB-encoded; an empty image before the first sample.
     Rgba8Image mean() const;
-    // Samples each pixel took, row by row.
+    // Samples each pixel took, row by row, and all of them together.
     const std::vector<std::uint32_t>& counts() const { return counts_; }
+    std::uint64_t taken() const { return taken_; }
     // The standard error of pixel i's mean in display units (infinite below two samples).
     double noise(std::size_t pixel) const;
-    // The tiles with a pixel whose noise is above `target`.
-    SampledTiles tiles_above(double target) const;
+    // The tiles with a pixel whose noise is above `target`; `noisy_pixels` counts those pixels.
+    SampledTiles tiles_above(double target, std::size_t* noisy_pixels = nullptr) const;
 
 private:
     std::uint32_t width_ = 0, height_ = 0, samples_ = 0;
     std::vector<float> sum_;                 // linear RGB and alpha per pixel
     std::vector<std::uint32_t> counts_;      // samples per pixel
+    std::uint64_t taken_ = 0;                // their sum
     std::vector<double> luma_, luma_squared_;   // sums of the display luma and its square
 };
 
