@@ -186,6 +186,7 @@ std::string SceneCodegen::value_of(const IrInput& in, Context context) const {
                 case ImplicitSource::LightDistance:
                     v = in_precision(towards_any ? "fg_light_distance" : fmt::format("{:g}", kDirectionalLightDistance), ValueType::Float);
                     break;
+                case ImplicitSource::LightSample: v = in_precision(shading ? "fg_light_sample()" : "vec3(0.0)", ValueType::Vec3); break;
                 case ImplicitSource::ToCamera: v = in_precision(shading ? "fg_to_camera" : "vec3(0.0)", ValueType::Vec3); break;
                 case ImplicitSource::Normal: v = in_precision(shading ? "fg_normal" : "vec3(0.0)", ValueType::Vec3); break;
                 case ImplicitSource::None: v = lowered("0.0"); break;

@@ -103,6 +103,7 @@ CpuValue CpuEvaluator::read(const IrInput& in, const std::vector<CpuValue>& slot
                 }
                 // The main light is directional: as far as a float goes.
                 case ImplicitSource::LightDistance: v = CpuValue::of(kDirectionalLightDistance); break;
+                case ImplicitSource::LightSample: v = CpuValue::of(glm::dvec3(0.0)); break;   // a single frame
                 case ImplicitSource::ToCamera: v = CpuValue::of(shade ? shade->to_camera : glm::dvec3(0, 0, 1)); break;
                 case ImplicitSource::Normal: v = CpuValue::of(shade ? shade->normal : glm::dvec3(0, 1, 0)); break;
                 case ImplicitSource::None: break;

@@ -16,6 +16,7 @@ constexpr ImplicitInfo kImplicit[] = {
     {ImplicitSource::Time, "time", ValueType::Float, false},
     {ImplicitSource::Light, "light", ValueType::Vec3, true},
     {ImplicitSource::LightDistance, "light_distance", ValueType::Float, true},
+    {ImplicitSource::LightSample, "light_sample", ValueType::Vec3, true},
     {ImplicitSource::ToCamera, "to_camera", ValueType::Vec3, true},
     {ImplicitSource::Normal, "normal", ValueType::Vec3, true},
 };

@@ -22,7 +22,9 @@ struct PortType {
 
 // What an unbound input takes: values the runtime supplies. Position and time exist everywhere;
 // the others only while shading a hit (a node using them is shade-only).
-enum class ImplicitSource { None, Position, Time, Light, LightDistance, ToCamera, Normal };
+// `light_sample`: a point on an area light's unit disc for this sample (xy) and whether offline
+// samples accumulate (z 1; 0 in a single frame), GpuFrame.area_light.
+enum class ImplicitSource { None, Position, Time, Light, LightDistance, LightSample, ToCamera, Normal };
 // `light_distance` of a directional light: farther than anything a float scene holds.
 constexpr double kDirectionalLightDistance = 1e30;
 

@@ -1,14 +1,31 @@
 void fg_light_soft_shadow(vec3 position, vec3 normal, vec3 light_dir, float light_distance, float angle, float start,
-                          float max_distance, int steps,
+                          float max_distance, int steps, bool area, vec3 light_sample,
                           OUT(float) shadow)
 {
     float slope = tan(angle * (FG_PI / 180.0));
     vec3 origin = position + normal * start;
+    float t = start;
+    float end = min(max_distance, light_distance);
+    if (area && light_sample.z > 0.0) {
+        // Samples accumulate: one sharp ray towards this sample's point of the light's disc (radius
+        // `slope` one unit along the light). It is blocked where it comes within a quarter of the
+        // smallest step of the surface or steps into it.
+        vec3 side = normalize(cross(light_dir, abs(light_dir.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+        vec3 towards = normalize(light_dir + slope * (light_sample.x * side + light_sample.y * cross(light_dir, side)));
+        shadow = 1.0;
+        for (int i = 0; i < steps && t < end; i++) {
+            float h = fg_scene_distance(origin + towards * t);
+            if (h < 0.25 * start) {
+                shadow = 0.0;
+                break;
+            }
+            t += max(h, start);
+        }
+        return;
+    }
     // The narrowest passage so far, in light radii: 1 clear of the light's disc, 0 at its centre,
     // -1 fully hidden.
     float passage = 1.0;
-    float t = start;
-    float end = min(max_distance, light_distance);
     for (int i = 0; i < steps && t < end && passage > -1.0; i++) {
         float h = fg_scene_distance(origin + light_dir * t);
         passage = min(passage, h / (slope * t));

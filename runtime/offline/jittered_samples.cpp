@@ -47,22 +47,24 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<Sam
     RenderedFrame first;
     SampleAccumulator left, right;
     std::optional<SampledTiles> sampled_left, sampled_right;   // none: every tile
-    std::vector<float> beauty_left, beauty_right;
+    AovSums sums_left, sums_right;
     const std::vector<glm::dvec2> pattern = sample_pattern(samples);
     const std::vector<glm::dvec2> lens = lens_pattern(samples);
     const std::vector<double> shutter = shutter_pattern(samples);
+    const std::vector<glm::dvec2> light = light_pattern(samples);
     const std::uint32_t width = renderer.graph().output_width;
     for (std::uint32_t k = 0; k < samples; ++k) {
         renderer.set_jitter(pattern[k]);
         if (renderer.aperture() > 0.0) renderer.set_lens(lens[k] * (0.5 * renderer.aperture()));
+        renderer.set_light_sample(light[k]);
         const SampleMoment m = moment(shutter[k]);
         RenderedFrame r = renderer.render(m.head, m.time, frame_index);
         const SampledTiles* l = sampled_left ? &*sampled_left : nullptr;
         const SampledTiles* rt = sampled_right ? &*sampled_right : nullptr;
         left.add(r.left, l);
         if (!r.right.pixels.empty()) right.add(r.right, rt);
-        if (!r.aovs_left.empty()) add_beauty(beauty_left, r.aovs_left, l, width);
-        if (!r.aovs_right.empty()) add_beauty(beauty_right, r.aovs_right, rt, width);
+        if (!r.aovs_left.empty()) add_samples(sums_left, r.aovs_left, l, width);
+        if (!r.aovs_right.empty()) add_samples(sums_right, r.aovs_right, rt, width);
         if (k == 0) {
             first = std::move(r);
         } else {
@@ -86,11 +88,12 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<Sam
     }
     renderer.set_jitter(glm::dvec2(0.0));
     renderer.set_lens(glm::dvec2(0.0));
+    renderer.set_light_sample(std::nullopt);
     renderer.set_sampled_tiles(nullptr, nullptr);
     first.left = left.mean();
     if (right.samples() > 0) first.right = right.mean();
-    if (!beauty_left.empty()) mean_beauty(first.aovs_left, beauty_left, left.counts());
-    if (!beauty_right.empty()) mean_beauty(first.aovs_right, beauty_right, right.counts());
+    if (!sums_left.empty()) mean_samples(first.aovs_left, sums_left, left.counts());
+    if (!sums_right.empty()) mean_samples(first.aovs_right, sums_right, right.counts());
     return first;
 }
 

@@ -22,6 +22,16 @@ std::size_t beauty_index() {
     throw std::logic_error("no beauty AOV");
 }
 
+// Which channels of AOV image `image` hold light or a share of it, averaged over a pixel's samples as
+// the picture is: the beauty, the light terms (specular, shadow), the mirror bounce, and the AO
+// in the normal image's alpha. Bit 0 is red.
+unsigned averaged_channels(std::size_t image) {
+    const std::string_view name = aov_images()[image].name;
+    if (name == "beauty" || name == "light" || name == "reflection") return 0xF;
+    if (name == "normal") return 0x8;
+    return 0;
+}
+
 float half_at(const std::vector<std::byte>& image, std::size_t index) {
     Imath::half h;
     std::memcpy(&h, image.data() + index * 2, 2);
@@ -51,7 +61,6 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
                                                      std::uint32_t width, std::uint32_t height, std::uint32_t factor) {
     if (factor <= 1) return aovs;
     const auto images = aov_images();
-    const std::size_t beauty = beauty_index();
     const std::size_t in_width = static_cast<std::size_t>(width) * factor;
     std::vector<std::vector<std::byte>> out(aovs.size());
     for (std::size_t k = 0; k < aovs.size(); ++k) {
@@ -61,11 +70,10 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
         for (std::uint32_t y = 0; y < height; ++y)
             for (std::uint32_t x = 0; x < width; ++x) {
                 std::byte* to = out[k].data() + (static_cast<std::size_t>(y) * width + x) * pixel;
-                if (k != beauty) {
-                    const std::size_t sx = x * factor + factor / 2, sy = y * factor + factor / 2;
-                    std::memcpy(to, aovs[k].data() + (sy * in_width + sx) * pixel, pixel);
-                    continue;
-                }
+                const std::size_t sx = x * factor + factor / 2, sy = y * factor + factor / 2;
+                std::memcpy(to, aovs[k].data() + (sy * in_width + sx) * pixel, pixel);
+                const unsigned averaged = averaged_channels(k);
+                if (averaged == 0) continue;
                 float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
                 for (std::uint32_t j = 0; j < factor; ++j)
                     for (std::uint32_t i = 0; i < factor; ++i) {
@@ -73,6 +81,7 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
                         for (int c = 0; c < 4; ++c) sum[c] += half_at(aovs[k], at + c);
                     }
                 for (int c = 0; c < 4; ++c) {
+                    if (!(averaged & (1u << c))) continue;
                     Imath::half h(sum[c] / static_cast<float>(factor * factor));
                     std::memcpy(to + c * 2, &h, 2);
                 }
@@ -81,24 +90,30 @@ std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std:
     return out;
 }
 
-void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs, const SampledTiles* sampled,
-                std::uint32_t width) {
-    const std::vector<std::byte>& beauty = aovs.at(beauty_index());
-    sum.resize(beauty.size() / 2, 0.0f);
-    for (std::size_t i = 0; i < sum.size(); ++i) {
-        const std::size_t pixel = i / 4;
-        if (sampled && !sampled->takes(static_cast<std::uint32_t>(pixel % width / 8), static_cast<std::uint32_t>(pixel / width / 8)))
-            continue;
-        sum[i] += half_at(beauty, i);
+void add_samples(AovSums& sums, const std::vector<std::vector<std::byte>>& aovs, const SampledTiles* sampled,
+                 std::uint32_t width) {
+    sums.resize(aovs.size());
+    for (std::size_t k = 0; k < aovs.size(); ++k) {
+        if (averaged_channels(k) == 0 || aovs[k].empty()) continue;   // geometry, or a term the scene lacks
+        std::vector<float>& sum = sums[k];
+        sum.resize(aovs[k].size() / 2, 0.0f);
+        for (std::size_t i = 0; i < sum.size(); ++i) {
+            const std::size_t pixel = i / 4;
+            if (sampled && !sampled->takes(static_cast<std::uint32_t>(pixel % width / 8), static_cast<std::uint32_t>(pixel / width / 8)))
+                continue;
+            sum[i] += half_at(aovs[k], i);
+        }
     }
 }
 
-void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum,
-                 const std::vector<std::uint32_t>& counts) {
-    std::vector<std::byte>& beauty = aovs.at(beauty_index());
-    for (std::size_t i = 0; i < sum.size() && 2 * i < beauty.size(); ++i) {
-        Imath::half h(sum[i] / static_cast<float>(std::max<std::uint32_t>(counts.at(i / 4), 1)));
-        std::memcpy(beauty.data() + 2 * i, &h, 2);
+void mean_samples(std::vector<std::vector<std::byte>>& aovs, const AovSums& sums, const std::vector<std::uint32_t>& counts) {
+    for (std::size_t k = 0; k < sums.size() && k < aovs.size(); ++k) {
+        const unsigned averaged = averaged_channels(k);
+        for (std::size_t i = 0; i < sums[k].size() && 2 * i < aovs[k].size(); ++i) {
+            if (!(averaged & (1u << (i % 4)))) continue;
+            Imath::half h(sums[k][i] / static_cast<float>(std::max<std::uint32_t>(counts.at(i / 4), 1)));
+            std::memcpy(aovs[k].data() + 2 * i, &h, 2);
+        }
     }
 }
 

@@ -27,20 +27,21 @@ struct OfflineEye {
     bool panorama = false;
 };
 
-// AOV images rendered `factor` x `factor` samples per pixel, at the output size: the beauty
-// box-filtered (it is linear light), the other passes taken from each pixel's central sample (a
-// depth or a normal averaged across an edge belongs to no surface).
+// AOV images rendered `factor` x `factor` samples per pixel, at the output size: the channels that
+// hold light box-filtered (the beauty, specular and shadow, the mirror bounce, AO: linear light or a
+// share of it), the others taken from each pixel's central sample (a depth or a normal averaged
+// across an edge belongs to no surface).
 std::vector<std::vector<std::byte>> downsample_aovs(std::vector<std::vector<std::byte>> aovs,
                                                      std::uint32_t width, std::uint32_t height, std::uint32_t factor);
 
-// Jittered samples of one eye (sample_accumulator.h): add_beauty sums each sample's beauty in
-// float, over the tiles `sampled` keeps (all without; `width`: the eye's); mean_beauty writes the
-// mean of each pixel's `counts` samples into the first sample's AOVs, whose other passes stay its
-// own, as downsample_aovs keeps a central sample's.
-void add_beauty(std::vector<float>& sum, const std::vector<std::vector<std::byte>>& aovs, const SampledTiles* sampled,
-                std::uint32_t width);
-void mean_beauty(std::vector<std::vector<std::byte>>& aovs, const std::vector<float>& sum,
-                 const std::vector<std::uint32_t>& counts);
+// Jittered samples of one eye (sample_accumulator.h): add_samples sums each sample's light channels
+// (those downsample_aovs averages) in float, over the tiles `sampled` keeps (all without; `width`:
+// the eye's); mean_samples writes the mean of each pixel's `counts` samples into the first sample's
+// AOVs, whose other channels stay its own, as downsample_aovs keeps a central sample's.
+using AovSums = std::vector<std::vector<float>>;   // per AOV image, a float per channel
+void add_samples(AovSums& sums, const std::vector<std::vector<std::byte>>& aovs, const SampledTiles* sampled,
+                 std::uint32_t width);
+void mean_samples(std::vector<std::vector<std::byte>>& aovs, const AovSums& sums, const std::vector<std::uint32_t>& counts);
 
 // The beauty tone mapped as the frame's own tone map does it (ACES fit; the beauty carries the
 // exposure), in 16 bits per channel; eyes side by side, or top-bottom for ODS (`stacked`).

@@ -92,6 +92,7 @@ std::vector<CpuValue> random_inputs(const NodeDefinition& def, std::optional<Val
             }
             case ImplicitSource::Time: v = CpuValue::of(std::uniform_real_distribution<double>(0.0, 10.0)(rng)); break;
             case ImplicitSource::LightDistance: v = CpuValue::of(std::uniform_real_distribution<double>(0.1, 10.0)(rng)); break;
+            case ImplicitSource::LightSample: v = CpuValue::of(glm::dvec3(0.0)); break;   // a single frame
             case ImplicitSource::Light:
             case ImplicitSource::ToCamera:
             case ImplicitSource::Normal: v = CpuValue::of(unit_vector(rng)); break;

@@ -13,6 +13,7 @@
 #include <Imath/half.h>
 
 #include "frame/aov_images.h"
+#include "offline/jittered_samples.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -140,6 +141,95 @@ TEST_F(Light, a_sphere_over_a_plane_casts_the_shadow_the_geometry_puts_with_its_
     EXPECT_NEAR(far_width, width(far_edge), pixel) << figures;
     EXPECT_NEAR(near_width, width(near_edge), pixel) << figures;
     EXPECT_GT(far_width, near_width + pixel) << "the penumbra widens with the distance to the occluder: " << figures;
+}
+
+TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
+    // The sphere over the plane under a light of 4 degrees' radius. Each of 64 samples marches one
+    // sharp ray towards a point of the light's disc; their mean must be the share of the disc a plane
+    // point sees past the sphere, integrated here from closed-form ray-sphere intersections.
+    const double radius = 0.3, height = 1.0, angle_deg = 4.0, start = 0.002;
+    Pack pack = test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "sphere over a plane, area light",
+      "nodes": [
+        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, {1}, 0.0]}}}},
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
+        {{"id": "ground", "type": "prim.plane"}},
+        {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
+        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": {4}, "max_distance": 6.0, "steps": 256}}}}
+      ],
+      "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow"}},
+      "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
+                "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
+    }})", radius, height, angle_deg, kFovDeg, start));
+    FrameSettings fs;
+    fs.width = fs.height = kSize;
+    fs.stereo = StereoMode::Naive;
+    fs.aovs = true;
+    StereoSettings stereo{kSize, kSize};
+    stereo.ipd_m = 0.0;
+    HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+    const std::size_t row = kSize / 2;
+    auto shadow_row = [&](const RenderedFrame& f) {
+        const std::vector<float> light = light_aov(f);
+        std::vector<double> out(kSize);
+        for (std::size_t x = 0; x < kSize; ++x) out[x] = light[4 * (row * kSize + x) + 3];
+        return out;
+    };
+    const std::vector<double> cone = shadow_row(r.render(r.scene_camera(), 0.0));
+    r.set_light_sample(glm::dvec2(0.3, 0.7));
+    const std::vector<double> one_sample = shadow_row(r.render(r.scene_camera(), 0.0));
+    r.set_light_sample(std::nullopt);
+    const std::vector<double> area = shadow_row(render_samples(r, r.scene_camera(), 0.0, 0, 64));
+
+    // The share of the light's disc (radius tan a one unit along the light, as the node samples it)
+    // seen from the plane at x, past the sphere.
+    const glm::dvec3 light = glm::normalize(glm::dvec3(1.0, 1.0, 0.0)), sphere(0.0, height, 0.0);
+    const glm::dvec3 side(0.0, 0.0, 1.0), up = glm::cross(light, side);
+    auto seen = [&](double x) {
+        const glm::dvec3 origin(x, start, 0.0);
+        int clear = 0, all = 0;
+        const int n = 160;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double u = (i + 0.5) / n * 2.0 - 1.0, v = (j + 0.5) / n * 2.0 - 1.0;
+                if (u * u + v * v > 1.0) continue;
+                const glm::dvec3 d = glm::normalize(light + std::tan(glm::radians(angle_deg)) * (u * side + v * up));
+                const double along = glm::dot(sphere - origin, d);
+                const double miss2 = glm::dot(sphere - origin, sphere - origin) - along * along;
+                ++all;
+                clear += along <= 0.0 || miss2 >= radius * radius;
+            }
+        return static_cast<double>(clear) / all;
+    };
+    const double half_width = 3.0 * std::tan(glm::radians(kFovDeg / 2.0));
+    auto x_of = [&](double column) { return -1.0 + (column / kSize - 0.5) * 2.0 * half_width; };
+    double area_error = 0.0, area_worst = 0.0, cone_error = 0.0;
+    int penumbra = 0, umbra = 0, soft_in_one_sample = 0;
+    for (std::size_t x = 2; x + 2 < kSize; ++x) {
+        // The pixel's samples spread over its width: the reference averages four points across it.
+        double reference = 0.0;
+        for (int s = 0; s < 4; ++s) reference += 0.25 * seen(x_of(x + (s + 0.5) / 4.0));
+        if (one_sample[x] > 0.0 && one_sample[x] < 1.0) ++soft_in_one_sample;
+        if (reference == 0.0) ++umbra;
+        if (reference <= 0.01 || reference >= 0.99) continue;
+        ++penumbra;
+        area_error += std::abs(area[x] - reference);
+        area_worst = std::max(area_worst, std::abs(area[x] - reference));
+        cone_error += std::abs(cone[x] - reference);
+    }
+    area_error /= std::max(penumbra, 1);
+    cone_error /= std::max(penumbra, 1);
+    const std::string figures = fmt::format(
+        "{} penumbra pixels, {} umbra; 64 samples against the disc's visible share: mean error {:.4f}, worst {:.4f}; "
+        "the single frame's cone-angle profile: mean error {:.4f}; soft values in one sample: {}",
+        penumbra, umbra, area_error, area_worst, cone_error, soft_in_one_sample);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    ASSERT_GT(penumbra, 20) << figures;
+    EXPECT_EQ(soft_in_one_sample, 0) << "a sample's shadow ray is sharp: " << figures;
+    EXPECT_LT(area_error, 0.02) << figures;
+    EXPECT_LT(area_worst, 0.08) << figures;
+    EXPECT_LT(area_error, 0.6 * cone_error) << "the area light is closer to the disc's share than the cone profile: " << figures;
 }
 
 TEST_F(Light, a_highlight_peaks_where_the_normal_halves_the_light_and_the_view) {

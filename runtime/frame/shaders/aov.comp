@@ -32,6 +32,7 @@ void main()
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y) return;
+    fg_shading_pixel = pixel;
     vec2 uv = (vec2(pixel) + 0.5) / vec2(size);
     vec3 ro = fg_ray_origin(pc.view, uv);
     vec3 rd = fg_ray_dir(pc.view, uv);

@@ -231,3 +231,31 @@ vec3 fg_linear_to_srgb(vec3 c)
 {
     return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
 }
+
+// Area lights (the implicit input `light_sample`, light.soft_shadow): this sample's point on a
+// light's unit disc (xy) and 1 while offline samples accumulate (z), or all 0 in a single frame.
+// Each pixel shifts the frame's point (GpuFrame.area_light) by an offset of its own, a Cranley-
+// Patterson rotation: a pixel's samples still cover the disc evenly, and a penumbra's few samples
+// show as fine noise, not as a stack of hard shadows. The shade and AOV passes set the pixel.
+ivec2 fg_shading_pixel = ivec2(0);
+
+vec3 fg_light_sample()
+{
+    if (fg_frame.area_light.z == 0.0) return vec3(0.0);
+    // A small integer hash of the pixel (PCG-style, two rounds).
+    uvec2 h = uvec2(fg_shading_pixel) * 1664525u + 1013904223u;
+    h.x += h.y * 1664525u;
+    h.y += h.x * 1664525u;
+    h ^= h >> 16u;
+    h.x += h.y * 1664525u;
+    h.y += h.x * 1664525u;
+    h ^= h >> 16u;
+    vec2 u = 2.0 * fract(fg_frame.area_light.xy + vec2(h) * (1.0 / 4294967296.0)) - 1.0;
+    if (u.x == 0.0 && u.y == 0.0) return vec3(0.0, 0.0, 1.0);
+    // Shirley and Chiu's concentric map of the square onto the disc keeps the points evenly spread.
+    const float quarter = 0.785398163;
+    bool wide = abs(u.x) > abs(u.y);
+    float r = wide ? u.x : u.y;
+    float phi = wide ? quarter * (u.y / u.x) : 2.0 * quarter - quarter * (u.x / u.y);
+    return vec3(r * cos(phi), r * sin(phi), 1.0);
+}

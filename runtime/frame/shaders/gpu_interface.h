@@ -94,6 +94,10 @@ struct GpuFrame {
     // Sub-pixel jitter of the eyes' pixel grids (StereoSettings::jitter), in pixels, x right, y
     // down: xy this frame's, zw the previous frame's (whose views are `previous`).
     vec4 jitter;
+    // Area lights while offline samples accumulate: xy this sample's point in [0, 1)^2, which each
+    // pixel shifts and maps onto a light's disc (fg_light_sample), z 1; all 0 in a single frame,
+    // which takes light.soft_shadow's cone-angle penumbra instead.
+    vec4 area_light;
 };
 
 // The scene's settings (set 0, binding 1): uniforms, so editing them never recompiles.
@@ -186,7 +190,7 @@ static_assert(sizeof(GpuView) == 96);
 static_assert(offsetof(GpuFrame, eye_size) == 288 && offsetof(GpuFrame, frame_index) == 304);
 static_assert(offsetof(GpuFrame, seconds) == 320 && offsetof(GpuFrame, pixel_cone_tan) == 336);
 static_assert(offsetof(GpuFrame, anchor_hi) == 352 && offsetof(GpuFrame, previous) == 384);
-static_assert(offsetof(GpuFrame, reuse) == 576 && offsetof(GpuFrame, jitter) == 592 && sizeof(GpuFrame) == 608);
+static_assert(offsetof(GpuFrame, reuse) == 576 && offsetof(GpuFrame, jitter) == 592 && sizeof(GpuFrame) == 624);
 static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
 static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
 static_assert(offsetof(GpuScene, exposure) == 192 && offsetof(GpuScene, auxiliary_light) == 208 && sizeof(GpuScene) == 336);

@@ -110,6 +110,7 @@ void main()
     ivec2 pixel = fg_dispatch_cell(pc.stride, ivec2(gl_GlobalInvocationID.xy));
     ivec2 size = ivec2(fg_frame.eye_size);
     if (pixel.x >= size.x || pixel.y >= size.y || !fg_dispatch_takes(pc.view, pixel, pc.stride)) return;
+    fg_shading_pixel = pixel;
     if (fg_outside_lens(pc.view, pixel)) {
         imageStore(fg_final, pixel, vec4(0.0, 0.0, 0.0, 1.0));
         if (FG_SHADE_HISTORY > 0.0) imageStore(fg_cache_depth, pixel, vec4(-1.0));
