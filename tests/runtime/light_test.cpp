@@ -58,15 +58,41 @@ std::vector<float> world_positions(const RenderedFrame& f) {
     return world;
 }
 
-RenderedFrame render(const Pack& pack) {
+// kSize² with the AOVs, the left eye at the camera.
+FrameSettings aov_frame() {
     FrameSettings fs;
     fs.width = fs.height = kSize;
     fs.stereo = StereoMode::Naive;
     fs.aovs = true;
+    return fs;
+}
+StereoSettings eye_at_camera() {
     StereoSettings stereo{kSize, kSize};
-    stereo.ipd_m = 0.0;   // the left eye at the camera
-    HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+    stereo.ipd_m = 0.0;
+    return stereo;
+}
+
+RenderedFrame render(const Pack& pack) {
+    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
     return r.render(r.scene_camera(), 0.0);
+}
+
+// A sphere of `radius` at `height` over the plane y = 0, lit at 45 degrees from +x by a light of
+// `angle_deg` radius; the camera 3 above the point x = -1, looking straight down.
+Pack sphere_over_a_plane(double radius, double height, double angle_deg, double start) {
+    return test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "sphere over a plane",
+      "nodes": [
+        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, {1}, 0.0]}}}},
+        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
+        {{"id": "ground", "type": "prim.plane"}},
+        {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
+        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": {4}, "max_distance": 6.0, "steps": 256}}}}
+      ],
+      "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow"}},
+      "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
+                "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
+    }})", radius, height, angle_deg, kFovDeg, start));
 }
 
 // The solution r of 0.25 (1 + r)^2 (2 - r) = level (soft_shadow.glsl's profile), by bisection.
@@ -87,19 +113,7 @@ TEST_F(Light, a_sphere_over_a_plane_casts_the_shadow_the_geometry_puts_with_its_
     // Sphere of radius 0.3 at height 1 over the plane y = 0, the light 45 degrees up from +x, a
     // light of 2 degrees' radius; the camera 3 above the shadow, looking straight down.
     const double radius = 0.3, height = 1.0, angle_deg = 2.0;
-    Pack pack = test::compile_pack(fmt::format(R"({{
-      "format": "fractograph-graph", "version": 1, "name": "sphere over a plane",
-      "nodes": [
-        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, {1}, 0.0]}}}},
-        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
-        {{"id": "ground", "type": "prim.plane"}},
-        {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
-        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": 0.002, "max_distance": 6.0, "steps": 256}}}}
-      ],
-      "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow"}},
-      "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
-                "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
-    }})", radius, height, angle_deg, kFovDeg));
+    Pack pack = sphere_over_a_plane(radius, height, angle_deg, 0.002);
     RenderedFrame f = render(pack);
     const std::vector<float> light = light_aov(f);
     // The plane's x at a column of the centre row (z = 0).
@@ -148,26 +162,8 @@ TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
     // sharp ray towards a point of the light's disc; their mean must be the share of the disc a plane
     // point sees past the sphere, integrated here from closed-form ray-sphere intersections.
     const double radius = 0.3, height = 1.0, angle_deg = 4.0, start = 0.002;
-    Pack pack = test::compile_pack(fmt::format(R"({{
-      "format": "fractograph-graph", "version": 1, "name": "sphere over a plane, area light",
-      "nodes": [
-        {{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0.0, {1}, 0.0]}}}},
-        {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
-        {{"id": "ground", "type": "prim.plane"}},
-        {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
-        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": {4}, "max_distance": 6.0, "steps": 256}}}}
-      ],
-      "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow"}},
-      "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
-                "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
-    }})", radius, height, angle_deg, kFovDeg, start));
-    FrameSettings fs;
-    fs.width = fs.height = kSize;
-    fs.stereo = StereoMode::Naive;
-    fs.aovs = true;
-    StereoSettings stereo{kSize, kSize};
-    stereo.ipd_m = 0.0;
-    HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+    Pack pack = sphere_over_a_plane(radius, height, angle_deg, start);
+    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
     const std::size_t row = kSize / 2;
     auto shadow_row = [&](const RenderedFrame& f) {
         const std::vector<float> light = light_aov(f);
