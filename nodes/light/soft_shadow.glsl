@@ -8,14 +8,15 @@ void fg_light_soft_shadow(vec3 position, vec3 normal, vec3 light_dir, float ligh
     float end = min(max_distance, light_distance);
     if (area && light_sample.z > 0.0) {
         // Samples accumulate: one sharp ray towards this sample's point of the light's disc (radius
-        // `slope` one unit along the light). It is blocked where it comes within a quarter of the
-        // smallest step of the surface or steps into it.
+        // `slope` one unit along the light). It is blocked where it enters the surface, or passes
+        // within a 32nd of the light's radius of it: a cone that thin, half hidden, is the sharp
+        // ray's limit of the profile below, and a distance that never goes negative still stops it.
         vec3 side = normalize(cross(light_dir, abs(light_dir.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
         vec3 towards = normalize(light_dir + slope * (light_sample.x * side + light_sample.y * cross(light_dir, side)));
         shadow = 1.0;
         for (int i = 0; i < steps && t < end; i++) {
             float h = fg_scene_distance(origin + towards * t);
-            if (h < 0.25 * start) {
+            if (h < (1.0 / 256.0) * slope * t) {
                 shadow = 0.0;
                 break;
             }
