@@ -27,9 +27,13 @@ void fg_light_soft_shadow(vec3 position, vec3 normal, vec3 light_dir, float ligh
     // The narrowest passage so far, in light radii: 1 clear of the light's disc, 0 at its centre,
     // -1 fully hidden.
     float passage = 1.0;
+    // How far the ray has gone on at the surface: a distance that never goes negative (Mandelbox,
+    // KIFS, Kleinian) stays near 0 inside the set, and this stands in for the depth it cannot give.
+    float at_surface = 0.0;
     for (int i = 0; i < steps && t < end && passage > -1.0; i++) {
         float h = fg_scene_distance(origin + light_dir * t);
-        passage = min(passage, h / (slope * t));
+        at_surface = h >= 0.0 && h < (1.0 / 256.0) * slope * t ? at_surface + start : 0.0;
+        passage = min(passage, (h - at_surface) / (slope * t));
         // Inside the surface h is negative: step on by the smallest step, deeper into the shadow.
         t += max(h, start);
     }

@@ -78,8 +78,9 @@ RenderedFrame render(const Pack& pack) {
 }
 
 // A sphere of `radius` at `height` over the plane y = 0, lit at 45 degrees from +x by a light of
-// `angle_deg` radius; the camera 3 above the point x = -1, looking straight down.
-Pack sphere_over_a_plane(double radius, double height, double angle_deg, double start) {
+// `angle_deg` radius; the camera 3 above the point x = -1, looking straight down. `never_negative`
+// clamps the distance at 0 inside, as the Mandelbox's and other folding fractals' estimates are.
+Pack sphere_over_a_plane(double radius, double height, double angle_deg, double start, bool never_negative = false) {
     return test::compile_pack(fmt::format(R"({{
       "format": "fractograph-graph", "version": 1, "name": "sphere over a plane",
       "nodes": [
@@ -87,12 +88,13 @@ Pack sphere_over_a_plane(double radius, double height, double angle_deg, double 
         {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": {0}}}}},
         {{"id": "ground", "type": "prim.plane"}},
         {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
+        {{"id": "outside", "type": "math.max", "inputs": {{"a": "both.distance", "b": 0.0}}}},
         {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": {4}, "max_distance": 6.0, "steps": 256}}}}
       ],
-      "outputs": {{"distance": "both.distance", "shadow": "shadow.shadow"}},
+      "outputs": {{"distance": "{5}", "shadow": "shadow.shadow"}},
       "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
                 "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
-    }})", radius, height, angle_deg, kFovDeg, start));
+    }})", radius, height, angle_deg, kFovDeg, start, never_negative ? "outside.value" : "both.distance"));
 }
 
 // The solution r of 0.25 (1 + r)^2 (2 - r) = level (soft_shadow.glsl's profile), by bisection.
@@ -155,6 +157,30 @@ TEST_F(Light, a_sphere_over_a_plane_casts_the_shadow_the_geometry_puts_with_its_
     EXPECT_NEAR(far_width, width(far_edge), pixel) << figures;
     EXPECT_NEAR(near_width, width(near_edge), pixel) << figures;
     EXPECT_GT(far_width, near_width + pixel) << "the penumbra widens with the distance to the occluder: " << figures;
+}
+
+TEST_F(Light, a_distance_that_never_goes_negative_still_casts_a_full_shadow) {
+    // Inside a folding fractal the estimate stays near 0, never below: the shadow ray cannot read
+    // how deep it went, and the cone profile would stop at half shadow. How far the ray goes on at
+    // the surface stands in for the depth: the sphere's shadow is dark again, its edges in place.
+    Pack pack = sphere_over_a_plane(0.3, 1.0, 2.0, 0.002, true);
+    const std::vector<float> light = light_aov(render(pack));
+    const double half_width = 3.0 * std::tan(glm::radians(kFovDeg / 2.0)), pixel = 2.0 * half_width / kSize;
+    const std::size_t row = kSize / 2, centre = static_cast<std::size_t>(kSize / 2.0);   // x = -1 under the camera
+    std::vector<double> shadow(kSize);
+    for (std::size_t x = 0; x < kSize; ++x) shadow[x] = light[4 * (row * kSize + x) + 3];
+    // The 50 % level's columns either side of the centre.
+    std::size_t far = centre, near = centre;
+    while (far > 0 && shadow[far] < 0.5) --far;
+    while (near + 1 < kSize && shadow[near] < 0.5) ++near;
+    const double far_x = -1.0 + (far + 0.5 - kSize / 2.0) * pixel, near_x = -1.0 + (near + 0.5 - kSize / 2.0) * pixel;
+    const std::string figures = fmt::format("shadow at the centre {:.3f}; 50 % at x = {:.4f} and {:.4f} (geometry {:.4f}, {:.4f}; a pixel is {:.4f})",
+                                            shadow[centre], far_x, near_x, -1.0 - 0.3 * std::sqrt(2.0), -1.0 + 0.3 * std::sqrt(2.0), pixel);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_LT(shadow[centre], 0.02) << figures;
+    EXPECT_NEAR(far_x, -1.0 - 0.3 * std::sqrt(2.0), 2.0 * pixel) << figures;
+    EXPECT_NEAR(near_x, -1.0 + 0.3 * std::sqrt(2.0), 2.0 * pixel) << figures;
 }
 
 TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
