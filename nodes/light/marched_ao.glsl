@@ -19,11 +19,15 @@ void fg_light_marched_ao(vec3 position, vec3 normal, float radius, int rays, flo
         float r = sqrt(u);
         vec3 direction = tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + normal * sqrt(1.0 - u);
         // How narrowly the cone's axis passed the surface, in cone half-widths (light.soft_shadow's march).
+        // A distance that never goes negative stays near 0 inside: how far the axis goes on at the
+        // surface stands in for the depth (as in light.soft_shadow).
         float passage = 1.0;
         float t = start;
+        float at_surface = 0.0;
         for (int s = 0; s < steps && t < radius && passage > -1.0; s++) {
             float h = fg_scene_distance(origin + direction * t);
-            passage = min(passage, h / (slope * t));
+            at_surface = h >= 0.0 && h < (1.0 / 256.0) * slope * t ? at_surface + start : 0.0;
+            passage = min(passage, (h - at_surface) / (slope * t));
             t += max(h, start);
         }
         float q = clamp(passage, -1.0, 1.0);
