@@ -3,8 +3,10 @@
 #include "codegen/double_lowering.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <future>
+#include <thread>
 #include <fmt/format.h>
 #include <xxhash.h>
 
@@ -183,7 +185,9 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
 
     // Code generation and the SPIR-V toolchain, pass by pass.
     SceneCodegen scene(*ir, library);
-    // Passes are independent: compile them on all cores (glslang and SPIRV-Tools dominate the time).
+    // Passes are independent: compile them on all cores (glslang and SPIRV-Tools dominate the time),
+    // one thread per core. More threads than cores only take turns, and each grows its own malloc
+    // arena (page faults) instead of reusing the memory of the pass its thread compiled before.
     std::vector<const PassTemplate*> templates;
     auto wanted = [&](const std::string& name) {
         return options.only_passes.empty() ||
@@ -193,11 +197,15 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
         if (tmpl.runs_with(effects) && wanted(tmpl.name)) templates.push_back(&tmpl);
     std::vector<PassBuild> builds(templates.size());
     {
-        std::vector<std::future<void>> jobs;
-        for (std::size_t i = 0; i < templates.size(); ++i)
-            jobs.push_back(std::async(std::launch::async, [&, i] {
+        std::atomic<std::size_t> next{0};
+        auto build_passes = [&] {
+            for (std::size_t i; (i = next++) < templates.size();)
                 builds[i] = build_pass(*templates[i], effects, scene, m.spec_constants, options);
-            }));
+        };
+        const std::size_t threads = std::min<std::size_t>(templates.size(), std::max(1u, std::thread::hardware_concurrency()));
+        std::vector<std::future<void>> jobs;
+        for (std::size_t t = 1; t < threads; ++t) jobs.push_back(std::async(std::launch::async, build_passes));
+        build_passes();   // this thread is one of them
         for (auto& j : jobs) j.get();
     }
     for (auto& b : builds) {

@@ -1,10 +1,13 @@
 #include "pack_writer.h"
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <xxhash.h>
+
+#include <unistd.h>
 
 #include "pack_format.h"
 
@@ -51,7 +54,9 @@ bool PackWriter::write_file(const std::string& path, Diagnostics& diag) const {
 }
 
 bool write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& data, Diagnostics& diag) {
-    std::string tmp = path + ".tmp";
+    // A temporary name of this process and call alone: two writers of one file never share it.
+    static std::atomic<unsigned> calls{0};
+    const std::string tmp = fmt::format("{}.tmp{}-{}", path, ::getpid(), calls++);
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) {

@@ -10,6 +10,7 @@
 #include "graph/node_library.h"
 #include "pack/pack_reader.h"
 #include "pack/pack_writer.h"
+#include "spirv/pass_cache_file.h"
 
 namespace fg {
 std::span<const EmbeddedFile> embedded_node_files();
@@ -82,7 +83,10 @@ int check(const Common& c, const std::string& graph) {
     auto lib = library_for(c, diag);
     auto text = read_text(graph, diag);
     if (!text) return report(diag, graph);
-    auto result = compile_graph(*text, lib, {}, diag);
+    PassCache cache(64, user_pass_cache_folder());
+    CompileOptions options;
+    options.cache = &cache;
+    auto result = compile_graph(*text, lib, options, diag);
     int rc = report(diag, graph);
     if (rc == 0 && result && !c.quiet) {
         fmt::print("{}: ok: {} nodes after folding {} and removing {}; effects: {}; Lipschitz bound {:.4g}\n", graph,
@@ -98,7 +102,9 @@ int compile(const Common& c, const std::string& graph, const std::string& output
     auto lib = library_for(c, diag);
     auto text = read_text(graph, diag);
     if (!text) return report(diag, graph);
+    PassCache cache(64, user_pass_cache_folder());   // passes an earlier run compiled are read from disk
     CompileOptions options;
+    options.cache = &cache;
     options.include_glsl = include_glsl;
     options.optimize = optimize;
     if (!precision.empty()) options.double_precision = precision == "double";
@@ -127,6 +133,8 @@ int compile(const Common& c, const std::string& graph, const std::string& output
                    "{:.1f}, glslang {:.1f}, spirv-opt+val {:.1f}, reflect {:.1f}\n",
                    t.wall_ms, t.load_ms, t.ir_ms, t.analysis_ms, t.codegen_ms, t.glslang_ms, t.optimize_ms,
                    t.reflect_ms);
+        fmt::print("  cache:      {} of {} passes compiled, the others read from the pass cache\n", t.passes_compiled,
+                   result->passes.size());
         for (const auto& n : result->lipschitz.notes) fmt::print("  note:       {}\n", n);
     }
     return 0;

@@ -13,6 +13,7 @@
 #include "frame/frame_executor.h"
 #include "pack/pack_reader.h"
 #include "spirv/pass_cache.h"
+#include "spirv/pass_cache_file.h"
 
 namespace fg::desktop {
 
@@ -48,9 +49,9 @@ private:
     std::string path_;
     bool watch_ = false, is_graph_ = false;
     ExecutorFactory factory_;
-    // Passes compiled before: a save recompiles only the passes whose code it changed. Shared with
-    // the compile thread, and thread-safe.
-    std::unique_ptr<PassCache> pass_cache_ = std::make_unique<PassCache>();
+    // Passes compiled before, in this run or kept on disk by an earlier one: a save recompiles only
+    // the passes whose code it changed. Shared with the compile thread, and thread-safe.
+    std::unique_ptr<PassCache> pass_cache_ = std::make_unique<PassCache>(64, user_pass_cache_folder());
     std::filesystem::file_time_type stamp_{};
     std::chrono::steady_clock::time_point last_check_{};
     std::future<Outcome> pending_;

@@ -78,7 +78,9 @@ std::optional<std::vector<std::uint8_t>> NodePreviews::render(const std::string&
     if (it == kept_.end()) {
         Diagnostics diag;
         ++compiles_;
-        auto result = compile_graph(text, library_, {}, diag);
+        CompileOptions options;
+        options.cache = &pass_cache_;
+        auto result = compile_graph(text, library_, options, diag);
         std::optional<Pack> pack;
         if (result) pack = read_pack(pack_bytes(*result), diag);
         if (!pack) {

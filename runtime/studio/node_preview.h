@@ -15,6 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "graph/node_library.h"
+#include "spirv/pass_cache.h"
+#include "spirv/pass_cache_file.h"
 #include "studio/preview_renderer.h"
 
 namespace fg::studio {
@@ -43,6 +45,8 @@ private:
     // Subgraphs compiled lately, newest first, by their text's hash: a slider move re-renders them.
     std::list<std::pair<std::string, std::unique_ptr<PreviewScene>>> kept_;
     std::uint64_t compiles_ = 0;
+    // Subgraphs share most passes' code with each other and with earlier sessions.
+    PassCache pass_cache_{64, user_pass_cache_folder()};
 };
 
 }  // namespace fg::studio

@@ -13,6 +13,7 @@
 
 #include "compiler.h"
 #include "graph/node_library.h"
+#include "spirv/pass_cache_file.h"
 #include "studio/calibration_job.h"
 #include "studio/edit_queue.h"
 #include "studio/graph_folder.h"
@@ -41,7 +42,8 @@ public:
 
     // Compiles of the preview's graph (node previews count apart).
     std::uint64_t compiles() const { return compiles_; }
-    // Every pass compiled this session, by its GLSL: an edit recompiles only the passes it changed.
+    // Every pass compiled this session or kept on disk by an earlier one, by its GLSL: an edit
+    // recompiles only the passes it changed.
     PassCache& pass_cache() { return pass_cache_; }
 
 private:
@@ -54,7 +56,7 @@ private:
     NodePreviews node_previews_;
     CalibrationJob calibration_;
     std::atomic<std::uint64_t> compiles_{0};
-    PassCache pass_cache_;
+    PassCache pass_cache_{64, user_pass_cache_folder()};
     std::vector<std::string> preview_passes_;   // the programs the playing scene runs; empty: not known yet
     std::unique_ptr<EditQueue> edits_;   // last: its thread uses everything above
 };

@@ -1,6 +1,5 @@
 #include "vk/pipeline_cache_file.h"
 
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -8,26 +7,13 @@
 
 #include <unistd.h>
 
+#include "user_cache_folder.h"
+
 namespace fg::vk {
 
-namespace {
-
-std::filesystem::path env_path(const char* name) {
-    const char* value = std::getenv(name);
-    return value && *value ? std::filesystem::path(value) : std::filesystem::path();
-}
-
-}  // namespace
-
 std::filesystem::path user_pipeline_cache_file() {
-    std::filesystem::path folder = env_path("FG_PIPELINE_CACHE");
-    if (folder == "off") return {};
-    if (folder.empty()) {
-        if (auto xdg = env_path("XDG_CACHE_HOME"); !xdg.empty()) folder = xdg / "fractograph";
-        else if (auto home = env_path("HOME"); !home.empty()) folder = home / ".cache" / "fractograph";
-        else return {};
-    }
-    return folder / "pipelines.bin";
+    const std::filesystem::path folder = user_cache_folder("FG_PIPELINE_CACHE");
+    return folder.empty() ? folder : folder / "pipelines.bin";
 }
 
 bool pipeline_cache_fits(std::span<const std::byte> data, const VkPhysicalDeviceProperties& device) {

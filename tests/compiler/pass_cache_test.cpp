@@ -10,15 +10,6 @@ namespace {
 
 std::string mandelbulb() { return fg::test::read_source_file("graphs/gallery/mandelbulb.json"); }
 
-// The gallery Mandelbulb with another value of the literal that scales its orbit trap: a change
-// to the colour alone.
-std::string mandelbulb_with_tone(double scale) {
-    auto graph = nlohmann::json::parse(mandelbulb());
-    for (auto& node : graph["nodes"])
-        if (node["id"] == "tone") node["inputs"]["s"] = scale;
-    return graph.dump();
-}
-
 std::optional<fg::CompileResult> compile(const std::string& text, const fg::CompileOptions& options) {
     fg::Diagnostics diag;
     auto result = fg::compile_graph(text, fg::NodeLibrary::builtin(), options, diag);
@@ -47,13 +38,13 @@ TEST(PassCache, a_colour_edit_recompiles_the_passes_that_shade_and_no_other) {
     fg::PassCache cache;
     fg::CompileOptions cached;
     cached.cache = &cache;
-    ASSERT_TRUE(compile(mandelbulb_with_tone(0.6), cached));
-    auto edited = compile(mandelbulb_with_tone(0.7), cached);
+    ASSERT_TRUE(compile(fg::test::mandelbulb_with_tone(0.6), cached));
+    auto edited = compile(fg::test::mandelbulb_with_tone(0.7), cached);
     ASSERT_TRUE(edited);
     // The marching passes evaluate the distance only: the trap's colour is not in their code.
     EXPECT_GT(edited->times.passes_compiled, 0u);
     EXPECT_LT(edited->times.passes_compiled, edited->passes.size() / 2);
-    EXPECT_EQ(fg::pack_bytes(*edited), fg::pack_bytes(*compile(mandelbulb_with_tone(0.7), {})));
+    EXPECT_EQ(fg::pack_bytes(*edited), fg::pack_bytes(*compile(fg::test::mandelbulb_with_tone(0.7), {})));
 }
 
 TEST(PassCache, optimised_and_plain_spirv_of_one_pass_are_kept_apart) {

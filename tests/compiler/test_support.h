@@ -47,6 +47,15 @@ inline std::string read_source_file(const std::string& relative) {
     return ss.str();
 }
 
+// The gallery Mandelbulb with another value of the literal that scales its orbit trap: a change
+// to the colour alone, which only the shade pass evaluates.
+inline std::string mandelbulb_with_tone(double scale) {
+    auto graph = nlohmann::json::parse(read_source_file("graphs/gallery/mandelbulb.json"));
+    for (auto& node : graph["nodes"])
+        if (node["id"] == "tone") node["inputs"]["s"] = scale;
+    return graph.dump();
+}
+
 // Runs the front end (load, IR, folding) and returns the diagnostics.
 inline Diagnostics check_front(const std::string& text) {
     Diagnostics diag;
