@@ -3,6 +3,7 @@
 
 #include "command_line.h"
 #include "compiler.h"
+#include "export_command.h"
 #include "fgc_commands.h"
 
 int main(int argc, char** argv) {
@@ -58,35 +59,12 @@ int main(int argc, char** argv) {
                           "how far the bias may move the visible surface, in hit thresholds (90th percentile near the surface; "
                           "default 2; 0: no limit)")->check(CLI::Range(0.0, 1e12));
 
-    fg::fgc::ExportOptions exp;
-    auto* export_cmd = app.add_subcommand("export", "sample the graph's surface into an OpenVDB level set (.vdb) and meshes of it "
-                                                    "(PLY, OBJ, STL), or merge the shards of a job array (docs/export.md)");
-    export_cmd->add_option("graph", graph, "graph JSON (not with --merge)");
-    export_cmd->add_option("-o,--output", exp.output, "level set to write (default: the graph's name with .vdb)");
-    export_cmd->add_option("--mesh", exp.meshes, "also write a mesh of the surface: .ply, .obj or .stl (repeatable)");
-    export_cmd->add_option("--box", exp.box, "region to export, x0,y0,z0,x1,y1,z1 (default: the cube around /scene/bounds)")
-        ->expected(6)->delimiter(',');
-    export_cmd->add_option("--resolution", exp.resolution, "voxels across the box's longest side (default 256)")
-        ->check(CLI::Range(8, 1 << 20));
-    export_cmd->add_option("--voxel-size", exp.voxel_size, "voxel edge in scene units (overrides --resolution)")
-        ->check(CLI::PositiveNumber);
-    export_cmd->add_option("--band", exp.half_width, "narrow band half-width in voxels (default 3)")->check(CLI::Range(1.0, 64.0));
-    export_cmd->add_option("--adaptivity", exp.adaptivity, "mesh simplification, 0 (every voxel) to 1 (fewest triangles; default 0)")
-        ->check(CLI::Range(0.0, 1.0));
-    export_cmd->add_option("--offset", exp.offset, "move the surface out by this distance (negative: in; default: 0, or half a "
-                                                   "voxel for a distance without inside)");
-    export_cmd->add_flag("--colors", exp.colors, "PLY vertex colours from the graph's albedo");
-    export_cmd->add_option("--param", exp.params, "set a parameter, NAME=VALUE (repeatable)");
-    export_cmd->add_option("--threads", exp.threads, "CPU threads (default 2)")->check(CLI::Range(1, 1024));
-    export_cmd->add_option("--max-memory", exp.max_memory, "refuse to start above this estimated peak, e.g. 8G (default: half the RAM)")
-        ->transform(CLI::AsSizeValue(false));
-    export_cmd->add_option("--shard", exp.shard, "sample only slab I of N of the box (job arrays); merge them with --merge");
-    export_cmd->add_option("--merge", exp.merge, "merge these shards' .vdb files into -o instead of sampling")->expected(1, -1);
-    export_cmd->add_flag("--dry-run", exp.dry_run, "print the estimate (voxels, memory, time) and stop");
-    export_cmd->add_flag("--quiet", exp.quiet, "no progress bar");
+    // Export runs in its own program, fgc-export, beside this one: OpenVDB's 69,000 symbol bindings
+    // would otherwise cost every fgc command about 25 ms at start. It takes this command line whole.
+    auto* export_cmd = fg::fgc::add_export_placeholder(app);
 
     if (auto failed = fg::cli::parse(app, argc, argv)) return *failed;
-    if (*export_cmd) return fg::fgc::export_level_set(common, graph, exp);
+    if (*export_cmd) return fg::fgc::run_export_program(argv);
     if (*calibrate) return fg::fgc::calibrate(common, graph, calib);
     if (*check) return fg::fgc::check(common, graph);
     if (*compile) return fg::fgc::compile(common, graph, output, glsl_dir, include_glsl, verbose, precision, !no_optimize);
