@@ -1,13 +1,6 @@
 #include "pack_writer.h"
 
-#include <atomic>
-#include <cstdio>
-#include <filesystem>
-#include <fmt/format.h>
-#include <fstream>
 #include <xxhash.h>
-
-#include <unistd.h>
 
 #include "pack_format.h"
 
@@ -51,32 +44,6 @@ std::vector<std::uint8_t> PackWriter::bytes() const {
 
 bool PackWriter::write_file(const std::string& path, Diagnostics& diag) const {
     return write_file_atomically(path, bytes(), diag);
-}
-
-bool write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& data, Diagnostics& diag) {
-    // A temporary name of this process and call alone: two writers of one file never share it.
-    static std::atomic<unsigned> calls{0};
-    const std::string tmp = fmt::format("{}.tmp{}-{}", path, ::getpid(), calls++);
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) {
-            diag.error(fmt::format("cannot write {}", tmp));
-            return false;
-        }
-        out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
-        if (!out) {
-            diag.error(fmt::format("writing {} failed (disk full?)", tmp));
-            return false;
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        diag.error(fmt::format("cannot move {} to {}: {}", tmp, path, ec.message()));
-        std::filesystem::remove(tmp, ec);
-        return false;
-    }
-    return true;
 }
 
 }  // namespace fg

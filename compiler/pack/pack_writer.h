@@ -5,14 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "common/atomic_file.h"
 #include "common/diagnostics.h"
 #include "pack_chunk.h"
 
 namespace fg {
-
-// Writes through a temporary file and a rename, so a failed write never leaves half a file and two
-// processes writing one file at once leave one of their files whole.
-bool write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes, Diagnostics& diag);
 
 class PackWriter {
 public:

@@ -5,27 +5,19 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 #include <vector>
 #include <xxhash.h>
+
+#include "common/atomic_file.h"
 
 namespace fg {
 
 namespace {
+// Unique per host and process (write_file_atomically): tasks given overlapping ranges never share
+// a temporary.
 bool write_then_rename(const std::string& path, std::span<const std::uint8_t> bytes) {
-    // Unique per host and process: tasks given overlapping ranges never share a temporary.
-    char host[64] = {};
-    ::gethostname(host, sizeof host - 1);
-    std::string tmp = fmt::format("{}.tmp.{}.{}", path, host, static_cast<long>(::getpid()));
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) return false;
-        f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-        if (!f) return false;
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    return !ec;
+    Diagnostics ignored;   // the caller says which frame could not be written
+    return write_file_atomically(path, bytes, ignored);
 }
 }  // namespace
 

@@ -2,11 +2,9 @@
 
 #include <cstring>
 #include <fstream>
-#include <string>
 #include <system_error>
 
-#include <unistd.h>
-
+#include "atomic_file.h"
 #include "user_cache_folder.h"
 
 namespace fg::vk {
@@ -39,21 +37,8 @@ std::vector<std::byte> read_pipeline_cache(const std::filesystem::path& file, co
 bool write_pipeline_cache(const std::filesystem::path& file, std::span<const std::byte> data) {
     std::error_code error;
     std::filesystem::create_directories(file.parent_path(), error);
-    // The process id keeps two writers from sharing one temporary file.
-    std::filesystem::path temporary = file;
-    temporary += ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
-        if (!out.flush()) {
-            std::filesystem::remove(temporary, error);
-            return false;
-        }
-    }
-    std::filesystem::rename(temporary, file, error);
-    if (!error) return true;
-    std::filesystem::remove(temporary, error);
-    return false;
+    Diagnostics ignored;   // the cache is a hint: a run that cannot keep it builds its pipelines again
+    return write_file_atomically(file.string(), {reinterpret_cast<const std::uint8_t*>(data.data()), data.size()}, ignored);
 }
 
 }  // namespace fg::vk
