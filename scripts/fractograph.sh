@@ -3,7 +3,8 @@
 #   bash scripts/fractograph.sh demo   install, build, compile a gallery graph, render a stereo frame
 #   bash scripts/fractograph.sh test   install, build, run every test; again under ASan + UBSan; each
 #                                      fuzzer for a minute (scripts/fuzz.sh SECONDS for long runs)
-#   bash scripts/fractograph.sh build  install and build only
+#   bash scripts/fractograph.sh build  install and build the tools only (no tests)
+#   bash scripts/fractograph.sh packages demo|test   the Debian packages that command installs
 # Idempotent: packages already installed are not touched, and a built tree only rebuilds what changed.
 set -euo pipefail
 
@@ -15,9 +16,22 @@ BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config)
 LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev spirv-cross libvulkan-dev
   mesa-vulkan-drivers vulkan-tools vulkan-validationlayers libglm-dev nlohmann-json3-dev libopenxr-dev
   libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libstb-dev libcli11-dev libfmt-dev
-  libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev libopenexr-dev libopenvdb-dev libtbb-dev)
+  libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev libopenexr-dev libopenvdb-dev libtbb-dev
+  libboost-dev)  # OpenVDB's headers include Boost's, but Debian 12's libopenvdb-dev does not depend on it
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib python3-jsonschema clang
   libclang-rt-14-dev chromium slurm-wlm munge python3-openvdb python3-vtk9 admesh)
+
+# Node.js and npm for the studio's page, when the machine has no npm of its own.
+STUDIO_PACKAGES=(nodejs npm)
+
+# The packages a command installs, one a line (scripts/check_packages.py checks the build against them).
+packages_of() {
+  case "$1" in
+    demo|build) printf '%s\n' "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${STUDIO_PACKAGES[@]}" ;;
+    test) printf '%s\n' "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${STUDIO_PACKAGES[@]}" "${TEST_PACKAGES[@]}" ;;
+    *) echo "packages of demo or test, not '$1'" >&2; exit 2 ;;
+  esac
+}
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*"; }
 
@@ -37,19 +51,24 @@ install_packages() {
 # The studio's page (studio/): Node.js and npm from the machine (Debian's when missing), and the
 # exact packages of package-lock.json; the build embeds the page, so nothing is fetched at run time.
 studio_packages() {
-  if ! command -v npm >/dev/null 2>&1; then install_packages nodejs npm; fi
+  if ! command -v npm >/dev/null 2>&1; then install_packages "${STUDIO_PACKAGES[@]}"; fi
   if [ ! -d "$ROOT/studio/node_modules" ] || [ "$ROOT/studio/package-lock.json" -nt "$ROOT/studio/node_modules/.package-lock.json" ]; then
     say "installing the studio page's npm packages (npm ci)"
     (cd "$ROOT/studio" && npm ci --no-audit --no-fund --loglevel=error)
   fi
 }
 
+# build [tests]: the tools; with "tests", the tests and benchmark programs too. The demo configures
+# without them, so it needs none of the test packages; a tree configured for tests stays so.
 build() {
   studio_packages
-  if [ ! -f "$BUILD/build.ninja" ]; then
+  local with_tests=OFF
+  [ "${1:-}" = tests ] && with_tests=ON
+  if [ ! -f "$BUILD/build.ninja" ] || { [ $with_tests = ON ] && grep -q '^FG_BUILD_TESTS:BOOL=OFF' "$BUILD/CMakeCache.txt"; }; then
     say "configuring $BUILD"
     # -g1: line tables name file and line in backtraces and profiles; full -g costs a fifth more build time.
-    cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
+    cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
+      -DFG_BUILD_TESTS=$with_tests -DFG_BUILD_BENCH=$with_tests >/dev/null
   fi
   say "building (log: $BUILD/build.log)"
   run_logged "$BUILD/build.log" cmake --build "$BUILD" -j "$JOBS"
@@ -159,7 +178,7 @@ stage() {
 test_all() {
   local start=$SECONDS
   stage "install packages" 4 install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
-  stage "build" 9 build
+  stage "build" 9 build tests
   stage "tests" 8 run_tests
   stage "sanitizer build" 9 build_sanitized
   stage "sanitizer tests" 12 run_sanitized_tests
@@ -172,5 +191,6 @@ case "${1:-}" in
   demo) demo ;;
   test) test_all ;;
   build) install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}"; build ;;
-  *) echo "usage: $0 demo|test|build" >&2; exit 2 ;;
+  packages) packages_of "${2:-test}" ;;
+  *) echo "usage: $0 demo|test|build|packages [demo|test]" >&2; exit 2 ;;
 esac
