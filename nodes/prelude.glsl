@@ -31,6 +31,15 @@ float fg_grow_dr(float dr, float gain)
     return gain * min(dr, FG_DR_MAX / max(gain, 1.0)) + 1.0;
 }
 
+// A running derivative times a formula stage's factor without overflowing, and without a division
+// (one per stage made formula graphs 40 % slower than hand-written nodes on lavapipe): exact while
+// both are below 1e18, where the product stays below FG_DR_MAX; past that the distance is below
+// 1e-18 of the orbit's radius, and FG_DR_MAX makes it smaller still, never larger.
+float fg_scale_dr(float dr, float factor)
+{
+    return dr < 1e18 && factor < 1e18 ? dr * factor : FG_DR_MAX;
+}
+
 // acos that stays defined when rounding pushes its argument past +-1.
 float fg_safe_acos(float x)
 {

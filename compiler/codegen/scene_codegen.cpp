@@ -132,11 +132,27 @@ void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const st
     auto key = [](const IrNode& n) { return std::make_pair(n.def->function_name(), n.generic ? static_cast<int>(*n.generic) : -1); };
     std::set<std::pair<std::string, int>> done;  // (function, generic instance)
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i)
-        if (skip[i]) done.insert(key(ir_.nodes[i]));
+        if (skip[i]) {
+            done.insert(key(ir_.nodes[i]));
+            if (ir_.nodes[i].formula)
+                for (const NodeDefinition* stage : ir_.nodes[i].formula->stage_definitions())
+                    done.insert({stage->function_name(), -1});
+        }
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
         if (!want[i]) continue;
         const IrNode& n = ir_.nodes[i];
+        if (n.formula)  // the stages its body calls, before its own function
+            for (const NodeDefinition* stage : n.formula->stage_definitions()) {
+                if (!done.insert({stage->function_name(), -1}).second) continue;
+                SourceOrigin body;
+                body.kind = SourceOrigin::Kind::Library;
+                body.file = "nodes/" + stage->glsl_path;
+                body.line = 1;
+                w.write(lowered(stage->glsl), body);
+                w.blank();
+            }
         if (n.custom_def) {
+            if (!done.insert(key(n)).second) continue;
             SourceOrigin head = from_node(n);
             std::string params;
             for (std::size_t i = 0; i < n.def->inputs.size(); ++i)

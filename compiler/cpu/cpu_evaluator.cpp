@@ -25,8 +25,17 @@ CpuEvaluator::CpuEvaluator(const IrGraph& ir) : ir_(&ir) {}
 std::optional<CpuEvaluator> CpuEvaluator::create(const IrGraph& ir, Diagnostics& diag) {
     CpuEvaluator ev(ir);
     for (const auto& n : ir.nodes) {
+        if (n.inputs.size() > kMaxNodeInputs) {
+            diag.error(fmt::format("node \"{}\" ({}) has {} inputs; the CPU twin takes at most {}", n.id, n.def->type,
+                                   n.inputs.size(), kMaxNodeInputs),
+                       n.pointer, n.id);
+            return std::nullopt;
+        }
+        std::shared_ptr<const CpuFormula> formula;
+        if (n.formula && !(formula = CpuFormula::create(n.formula, n.id, n.pointer, diag))) return std::nullopt;
+        ev.formulas_.push_back(formula);
         CpuNodeFunction f = n.custom_def ? nullptr : find_cpu_node(n.def->type, n.generic);
-        if (!f) {
+        if (!f && !formula) {
             diag.error(fmt::format("node \"{}\" ({}) has no CPU twin{}", n.id, n.def->type,
                                    n.custom_def ? ": custom GLSL runs only on the GPU" : ""),
                        n.pointer, n.id);
@@ -116,17 +125,19 @@ CpuValue CpuEvaluator::read(const IrInput& in, const std::vector<CpuValue>& slot
 
 void CpuEvaluator::run(const Plan& plan, std::vector<CpuValue>& slots, const glm::dvec3& p,
                        const CpuShadeInputs* shade) const {
-    CpuValue args[16];
+    CpuValue args[kMaxNodeInputs];
     for (int idx : plan.nodes) {
         const auto& n = ir_->nodes[static_cast<std::size_t>(idx)];
-        for (std::size_t i = 0; i < n.inputs.size() && i < 16; ++i) {
+        for (std::size_t i = 0; i < n.inputs.size(); ++i) {
             args[i] = read(n.inputs[i], slots, p, shade);
             if (n.inputs[i].kind == IrInput::Kind::Knob) {
                 auto k = knobs_.find({idx, static_cast<int>(i)});
                 if (k != knobs_.end()) args[i] = CpuValue::of(k->second);
             }
         }
-        functions_[static_cast<std::size_t>(idx)](args, &slots[slot_offset_[static_cast<std::size_t>(idx)]]);
+        CpuValue* out = &slots[slot_offset_[static_cast<std::size_t>(idx)]];
+        if (const auto& formula = formulas_[static_cast<std::size_t>(idx)]) formula->run(args, out);
+        else functions_[static_cast<std::size_t>(idx)](args, out);
     }
 }
 
@@ -189,7 +200,7 @@ CpuSurface CpuEvaluator::surface(const glm::dvec3& p, const CpuShadeInputs& shad
 }
 
 std::optional<std::vector<CpuValue>> CpuEvaluator::evaluate_constant_node(const IrNode& node) {
-    if (node.custom_def || node.shade_only) return std::nullopt;
+    if (node.custom_def || node.shade_only) return std::nullopt;  // formulas too: they iterate on p
     CpuNodeFunction f = find_cpu_node(node.def->type, node.generic);
     if (!f) return std::nullopt;
     std::vector<CpuValue> args;

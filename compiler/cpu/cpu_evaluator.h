@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "common/diagnostics.h"
+#include "cpu/cpu_formula.h"
 #include "cpu_node_registry.h"
 #include "ir/ir_graph.h"
 
@@ -31,6 +32,7 @@ struct CpuSurface {
 
 class CpuEvaluator {
 public:
+    static constexpr std::size_t kMaxNodeInputs = 32;
     // nullopt (with a diagnostic naming the node) when a node has no CPU twin, e.g. custom GLSL.
     static std::optional<CpuEvaluator> create(const IrGraph& ir, Diagnostics& diag);
 
@@ -68,6 +70,7 @@ private:
 
     const IrGraph* ir_;
     std::vector<CpuNodeFunction> functions_;
+    std::vector<std::shared_ptr<const CpuFormula>> formulas_;   // fractal.formula nodes (else null)
     std::vector<std::size_t> slot_offset_;   // first output slot of each node
     std::size_t slot_count_ = 0;
     std::vector<CpuValue> params_;

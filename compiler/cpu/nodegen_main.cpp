@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
 
     std::string bodies, wrappers, entries;
     for (const auto* def : lib.all()) {
-        if (def->builtin_input) continue;
+        if (def->builtin_input || def->generated_body()) continue;
         std::vector<std::optional<fg::ValueType>> instances;
         if (def->generic.empty()) instances.push_back(std::nullopt);
         for (auto t : def->generic) instances.push_back(t);

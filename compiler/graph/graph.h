@@ -3,6 +3,7 @@
 // input bindings, outputs and scene settings. Every element keeps its JSON pointer so later
 // stages can report problems against the file.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/value_type.h"
+#include "graph/formula_body.h"
 #include "graph/node_definition.h"
 #include "graph/scene_settings.h"
 
@@ -50,6 +52,7 @@ struct GraphNode {
     std::string type;
     std::map<std::string, Binding> inputs;
     std::optional<CustomCode> custom;  // type "custom.glsl"
+    std::shared_ptr<const FormulaBody> formula;  // type "fractal.formula"
     std::string pointer;               // /nodes/3
 };
 
@@ -68,6 +71,7 @@ struct Graph {
 };
 
 inline constexpr const char* kCustomNodeType = "custom.glsl";
+inline constexpr const char* kFormulaNodeType = "fractal.formula";
 
 // The outputs a graph may bind, with their types and the effect binding each one adds.
 struct GraphOutputSpec {

@@ -1,5 +1,6 @@
 #include "graph_loader.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <fstream>
 #include <functional>
@@ -51,6 +52,7 @@ private:
     const NodeLibrary& lib_;
     Diagnostics& diag_;
     JsonFieldReader fields_;
+    std::string body_owner_;  // the formula node whose body is being read
 
     // The fields of node `id`: its problems carry the node's id.
     JsonFieldReader node_fields(const std::string& id) {
@@ -213,82 +215,208 @@ private:
         }
         const json* nodes = fields_.array_field(doc, "nodes", "");
         if (!nodes) return;
-        const json& ns = *nodes;
         std::set<std::string> ids;
-        for (std::size_t i = 0; i < ns.size(); ++i) {
-            std::string ptr = fmt::format("/nodes/{}", i);
-            const json& nj = ns[i];
-            if (!fields_.is_object(nj, ptr)) continue;
-            GraphNode n;
-            n.pointer = ptr;
-            if (!fields_.required(nj, "id", ptr, n.id)) continue;
-            if (!is_valid_node_id(n.id)) {
-                diag_.error(fmt::format("node id \"{}\" may use only letters, digits, '_' and '-'", n.id), ptr + "/id", n.id);
-                continue;
+        for (std::size_t i = 0; i < nodes->size(); ++i)
+            if (auto n = read_node((*nodes)[i], fmt::format("/nodes/{}", i), ids, false)) g.nodes.push_back(std::move(*n));
+    }
+
+    // One node of the graph, or of a formula body (`in_body`: stage nodes whose z and c may be left
+    // unbound, meaning the orbit point entering the group and the formula's c).
+    std::optional<GraphNode> read_node(const json& nj, const std::string& ptr, std::set<std::string>& ids, bool in_body) {
+        if (!fields_.is_object(nj, ptr)) return std::nullopt;
+        GraphNode n;
+        n.pointer = ptr;
+        if (!fields_.required(nj, "id", ptr, n.id)) return std::nullopt;
+        // A body's problems belong to its formula node, the node an editor draws.
+        const std::string who = in_body ? body_owner_ : n.id;
+        if (!is_valid_node_id(n.id)) {
+            diag_.error(fmt::format("node id \"{}\" may use only letters, digits, '_' and '-'", n.id), ptr + "/id", who);
+            return std::nullopt;
+        }
+        if (!ids.insert(n.id).second) {
+            diag_.error(fmt::format("duplicate node id \"{}\"", n.id), ptr + "/id", who);
+            return std::nullopt;
+        }
+        JsonFieldReader fields = node_fields(who);
+        if (!fields.required(nj, "type", ptr, n.type)) return std::nullopt;
+        const bool custom = n.type == kCustomNodeType, formula = n.type == kFormulaNodeType;
+        if (custom)
+            fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui", "ports", "code", "lipschitz"},
+                                "node field");
+        else if (formula && !in_body)
+            fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui", "formula"}, "node field");
+        else
+            fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui"}, "node field");
+        const NodeDefinition* def = nullptr;
+        if (custom && !in_body) {
+            n.custom = read_custom(nj, ptr, who);
+        } else {
+            def = lib_.find(n.type);
+            if (!def) {
+                auto near = lib_.similar(n.type);
+                diag_.error(fmt::format("unknown node type \"{}\"{}", n.type,
+                                        near.empty() ? " (fgc nodes lists them)" : "; did you mean " + join(near) + "?"),
+                            ptr + "/type", who);
+            } else if (in_body != def->is_stage()) {
+                diag_.error(in_body ? fmt::format("a formula body holds stage.* nodes, and {} is not one (fgc nodes "
+                                                  "stage lists them)", n.type)
+                                    : fmt::format("{} is a formula stage: it works only inside the body of a {} node",
+                                                  n.type, kFormulaNodeType),
+                            ptr + "/type", who);
+                def = nullptr;
             }
-            if (!ids.insert(n.id).second) {
-                diag_.error(fmt::format("duplicate node id \"{}\"", n.id), ptr + "/id", n.id);
-                continue;
-            }
-            JsonFieldReader fields = node_fields(n.id);
-            if (!fields.required(nj, "type", ptr, n.type)) continue;
-            const bool custom = n.type == kCustomNodeType;
-            if (custom)
-                fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui", "ports", "code", "lipschitz"},
-                                    "node field");
-            else
-                fields.unknown_keys(nj, ptr, {"id", "type", "inputs", "comment", "ui"}, "node field");
-            const NodeDefinition* def = nullptr;
-            if (custom) {
-                n.custom = read_custom(nj, ptr, n.id);
-            } else {
-                def = lib_.find(n.type);
-                if (!def) {
-                    auto near = lib_.similar(n.type);
-                    diag_.error(fmt::format("unknown node type \"{}\"{}", n.type,
-                                            near.empty() ? " (fgc nodes lists them)" : "; did you mean " + join(near) + "?"),
-                                ptr + "/type", n.id);
+        }
+        if (formula && !in_body) {
+            if (!nj.contains("formula")) diag_.error("a fractal.formula node needs its \"formula\": groups of stages", ptr, who);
+            else n.formula = read_formula(nj["formula"], ptr + "/formula", n.id);
+        }
+        if (const json* inputs = fields.object_field(nj, "inputs", ptr)) {
+            const json& ins = *inputs;
+            for (auto it = ins.begin(); it != ins.end(); ++it) {
+                std::string ip = ptr + "/inputs/" + it.key();
+                const PortDefinition* port = nullptr;
+                if (def) port = def->find_input(it.key());
+                if (n.custom)
+                    for (const auto& p : n.custom->inputs)
+                        if (p.name == it.key()) port = &p;
+                if ((def || n.custom) && !port) {
+                    std::vector<std::string> names;
+                    for (const auto& p : def ? def->inputs : n.custom->inputs) names.push_back(p.name);
+                    diag_.error(fmt::format("{} has no input \"{}\"; its inputs are: {}", n.type, it.key(),
+                                            names.empty() ? "(none)" : join(names)),
+                                ip, who);
+                    continue;
                 }
-            }
-            if (const json* inputs = fields.object_field(nj, "inputs", ptr)) {
-                const json& ins = *inputs;
-                for (auto it = ins.begin(); it != ins.end(); ++it) {
-                    std::string ip = ptr + "/inputs/" + it.key();
-                    const PortDefinition* port = nullptr;
-                    if (def) port = def->find_input(it.key());
-                    if (n.custom)
-                        for (const auto& p : n.custom->inputs)
-                            if (p.name == it.key()) port = &p;
-                    if ((def || n.custom) && !port) {
-                        std::vector<std::string> names;
-                        for (const auto& p : def ? def->inputs : n.custom->inputs) names.push_back(p.name);
-                        diag_.error(fmt::format("{} has no input \"{}\"; its inputs are: {}", n.type, it.key(),
-                                                names.empty() ? "(none)" : join(names)),
-                                    ip, n.id);
+                auto b = read_binding(it.value(), ip, who);
+                if (!b) continue;
+                if (b->kind == Binding::Kind::Literal && port) {
+                    LiteralSite site{ip, who};
+                    if (port->type.concrete) {
+                        auto c = coerce_literal(b->literal, *port->type.concrete, site, diag_);
+                        if (!c || !check_range(*c, port->min, port->max, site, diag_)) continue;
+                        b->literal = *c;
+                    } else if (!check_range(b->literal, port->min, port->max, site, diag_)) {
                         continue;
                     }
-                    auto b = read_binding(it.value(), ip, n.id);
-                    if (!b) continue;
-                    if (b->kind == Binding::Kind::Literal && port) {
-                        LiteralSite site{ip, n.id};
-                        if (port->type.concrete) {
-                            auto c = coerce_literal(b->literal, *port->type.concrete, site, diag_);
-                            if (!c || !check_range(*c, port->min, port->max, site, diag_)) continue;
-                            b->literal = *c;
-                        } else if (!check_range(b->literal, port->min, port->max, site, diag_)) {
-                            continue;
-                        }
-                    }
-                    n.inputs[it.key()] = *b;
+                }
+                n.inputs[it.key()] = *b;
+            }
+        }
+        if (def || n.custom) {
+            for (const auto& p : def ? def->inputs : n.custom->inputs)
+                if (p.required() && !n.inputs.count(p.name) && !(in_body && (p.name == "z" || p.name == "c")))
+                    diag_.error(fmt::format("missing required input \"{}\" ({}) of {}", p.name, p.type.text(), n.type),
+                                ptr + "/inputs", who);
+        }
+        return n;
+    }
+
+    // "formula": {"groups": [{"name", "nodes", "z"}], "schedule": [{"group", "count"}], "repeat",
+    // "julia", "estimate", "bound_radius"}
+    std::shared_ptr<const FormulaBody> read_formula(const json& fj, const std::string& ptr, const std::string& id) {
+        JsonFieldReader fields = node_fields(id);
+        if (!fields.is_object(fj, ptr)) return nullptr;
+        fields.unknown_keys(fj, ptr, {"groups", "schedule", "repeat", "julia", "estimate", "sheet_radius", "bound_radius", "comment"},
+                            "formula field");
+        auto body = std::make_shared<FormulaBody>();
+        body->pointer = ptr;
+        body_owner_ = id;
+        fields.optional(fj, "repeat", ptr, body->repeat);
+        fields.optional(fj, "julia", ptr, body->julia);
+        fields.optional(fj, "estimate", ptr, body->estimate, Choices{"linear", "log", "box", "sheet"});
+        fields.optional(fj, "sheet_radius", ptr, body->sheet_radius, NumberRange{0.0});
+        fields.optional(fj, "bound_radius", ptr, body->bound_radius, NumberRange{0.0});
+        std::set<std::string> ids;  // node ids are unique across the body's groups
+        if (const json* groups = fields.array_field(fj, "groups", ptr, true)) {
+            if (groups->empty()) diag_.error("a formula has at least one group of stages", ptr + "/groups", id);
+            for (std::size_t gi = 0; gi < groups->size(); ++gi) {
+                std::string gp = fmt::format("{}/groups/{}", ptr, gi);
+                const json& gj = (*groups)[gi];
+                if (!fields.is_object(gj, gp)) continue;
+                fields.unknown_keys(gj, gp, {"name", "nodes", "z", "comment"}, "group field");
+                FormulaGroup group;
+                group.pointer = gp;
+                if (!fields.required(gj, "name", gp, group.name)) continue;
+                for (const auto& other : body->groups)
+                    if (other.name == group.name)
+                        diag_.error(fmt::format("two groups are named \"{}\"", group.name), gp + "/name", id);
+                if (const json* nodes = fields.array_field(gj, "nodes", gp, true)) {
+                    for (std::size_t i = 0; i < nodes->size(); ++i)
+                        if (auto n = read_node((*nodes)[i], fmt::format("{}/nodes/{}", gp, i), ids, true))
+                            group.nodes.push_back(std::move(*n));
+                    if (nodes->empty()) diag_.error("a group has at least one stage", gp + "/nodes", id);
+                }
+                if (!group.nodes.empty()) group.z_node = group.nodes.back().id;
+                fields.optional(gj, "z", gp, group.z_node);
+                check_group(group, id);
+                body->groups.push_back(std::move(group));
+            }
+        }
+        if (const json* schedule = fields.array_field(fj, "schedule", ptr)) {
+            for (std::size_t si = 0; si < schedule->size(); ++si) {
+                std::string sp = fmt::format("{}/schedule/{}", ptr, si);
+                const json& sj = (*schedule)[si];
+                if (!fields.is_object(sj, sp)) continue;
+                fields.unknown_keys(sj, sp, {"group", "count"}, "schedule field");
+                FormulaSegment seg;
+                seg.pointer = sp;
+                if (!fields.required(sj, "group", sp, seg.group)) continue;
+                std::int64_t count = 0;
+                fields.optional(sj, "count", sp, count, NumberRange{1.0, 1000.0});
+                seg.count = static_cast<int>(count);
+                if (std::none_of(body->groups.begin(), body->groups.end(), [&](auto& g) { return g.name == seg.group; })) {
+                    std::vector<std::string> names;
+                    for (const auto& g : body->groups) names.push_back(g.name);
+                    diag_.error(fmt::format("no group \"{}\"; the groups are: {}", seg.group, join(names)), sp + "/group", id);
+                }
+                if (seg.count == 0 && si + 1 < schedule->size())
+                    diag_.error("only the last segment may leave out \"count\" (it runs every iteration left)", sp, id);
+                body->schedule.push_back(seg);
+            }
+        } else if (body->groups.size() > 1) {
+            diag_.error("a formula of several groups needs a \"schedule\": [{\"group\": ..., \"count\": ...}, ...]", ptr, id);
+        }
+        return body;
+    }
+
+    // Within a group a stage's z comes from the point entering the group or from another stage's z,
+    // and every other input is a literal or a $param.
+    void check_group(const FormulaGroup& group, const std::string& id) {
+        std::map<std::string, const GraphNode*> by_id;
+        for (const auto& n : group.nodes) by_id[n.id] = &n;
+        if (!group.z_node.empty() && !by_id.count(group.z_node))
+            diag_.error(fmt::format("\"z\" names node \"{}\", which is not in this group", group.z_node),
+                        group.pointer + "/z", id);
+        for (const auto& n : group.nodes)
+            for (const auto& [port, b] : n.inputs) {
+                if (b.kind != Binding::Kind::Node) continue;
+                if (port != "z") {
+                    diag_.error(fmt::format("input \"{}\" of a stage takes a literal or a $param; only \"z\" takes another "
+                                            "stage's output",
+                                            port),
+                                b.pointer, id);
+                } else if (!by_id.count(b.node)) {
+                    diag_.error(fmt::format("\"{}\" is not a stage of this group (leave z unbound for the point entering "
+                                            "the group)",
+                                            b.node),
+                                b.pointer, id);
+                } else if (!b.port.empty() && b.port != "z") {
+                    diag_.error(fmt::format("a stage's z takes another stage's \"z\", not \"{}\"", b.port), b.pointer, id);
                 }
             }
-            if (def || n.custom) {
-                for (const auto& p : def ? def->inputs : n.custom->inputs)
-                    if (p.required() && !n.inputs.count(p.name))
-                        diag_.error(fmt::format("missing required input \"{}\" ({}) of {}", p.name, p.type.text(), n.type),
-                                    ptr + "/inputs", n.id);
+        // Following z inputs back from any stage must end at the group's entry point.
+        for (const auto& n : group.nodes) {
+            std::set<std::string> seen{n.id};
+            for (const GraphNode* at = &n;;) {
+                auto z = at->inputs.find("z");
+                if (z == at->inputs.end() || z->second.kind != Binding::Kind::Node || !by_id.count(z->second.node)) break;
+                if (!seen.insert(z->second.node).second) {
+                    diag_.error(fmt::format("cycle: stage \"{}\" takes its z from itself through the chain", n.id),
+                                z->second.pointer, id);
+                    return;
+                }
+                at = by_id[z->second.node];
             }
-            g.nodes.push_back(std::move(n));
         }
     }
 
@@ -358,8 +486,14 @@ private:
     }
 
     void check_references(const Graph& g) {
-        for (const auto& n : g.nodes)
+        for (const auto& n : g.nodes) {
             for (const auto& [_, b] : n.inputs) check_binding(g, b, n.id);
+            if (n.formula)  // a body's own wiring is checked by check_group
+                for (const auto& group : n.formula->groups)
+                    for (const auto& stage : group.nodes)
+                        for (const auto& [_, b] : stage.inputs)
+                            if (b.kind == Binding::Kind::Param) check_binding(g, b, n.id);
+        }
         for (const auto& [_, b] : g.outputs) check_binding(g, b, {});
     }
 

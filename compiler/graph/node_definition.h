@@ -45,6 +45,22 @@ struct PortDefinition {
     bool required() const { return !default_value && implicit == ImplicitSource::None; }
 };
 
+// How a formula stage (a stage.* node, used inside a fractal.formula body) moves the running
+// derivative dr of the orbit point z with respect to the sample point. The compiler composes these
+// into the formula's dr; node authors declare them once and never write derivative code.
+struct StageDerivative {
+    enum class Rule {
+        None,       // not a stage
+        Isometry,   // lengths kept (reflections, rotations, translations, folds of those): dr unchanged
+        Conformal,  // locally a similarity: dr *= the output `factor` (exact)
+        Power,      // not conformal: dr *= the output `factor`, the conventional scalar estimate the bias
+                    // guards; a formula with such a stage uses the logarithmic distance estimate
+        AddC,       // z + weight * c: dr += |input `weight`| when c is the sample point
+    } rule = Rule::None;
+    std::string factor;   // Conformal, Power: the output holding the factor
+    std::string weight;   // AddC: the input holding the weight
+};
+
 enum class NodeContext {
     Any,    // pure function of its inputs: may feed the distance
     Shade,  // evaluated only at a hit (may call the scene distance, read the normal)
@@ -60,6 +76,7 @@ struct NodeDefinition {
     std::vector<ValueType> generic;                 // types T may take; empty if not generic
     std::map<std::string, std::string> lipschitz;   // output name -> rule (see analysis/lipschitz_rule.h)
     std::string running_derivative;                 // the dr update the bias guards; non-empty for DE fractals
+    StageDerivative derivative;                     // stage.* nodes: how z's derivative moves
     std::vector<Effect> effects;                    // using the node adds these
     nlohmann::json example;                         // an example node ("inputs": {...}) for the docs
     std::string glsl;                               // the body: one function, function_name()
@@ -72,6 +89,8 @@ struct NodeDefinition {
     const PortDefinition* find_input(const std::string& name) const;
     const PortDefinition* find_output(const std::string& name) const;
     std::string namespace_name() const;             // "fractal"
+    bool generated_body() const { return type == "fractal.formula"; }  // its GLSL comes from its body graph
+    bool is_stage() const { return derivative.rule != StageDerivative::Rule::None; }
 };
 
 }  // namespace fg

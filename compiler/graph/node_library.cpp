@@ -19,6 +19,42 @@ std::span<const EmbeddedFile> embedded_node_files();  // generated from nodes/ (
 
 using nlohmann::json;
 
+namespace {
+
+// "derivative": {"rule": ..., "factor": output, "weight": input}; a stage's first input and first
+// output are its orbit point z (vec3).
+void read_stage_derivative(const json& d, NodeDefinition& def, JsonFieldReader& r) {
+    using Rule = StageDerivative::Rule;
+    r.unknown_keys(d, "/derivative", {"rule", "factor", "weight"});
+    std::string rule;
+    if (!r.required(d, "rule", "/derivative", rule, Choices{"isometry", "conformal", "power", "add_c"})) return;
+    auto& sd = def.derivative;
+    sd.rule = rule == "isometry" ? Rule::Isometry : rule == "conformal" ? Rule::Conformal : rule == "power" ? Rule::Power : Rule::AddC;
+    if (sd.rule == Rule::Conformal || sd.rule == Rule::Power) {
+        if (r.required(d, "factor", "/derivative", sd.factor)) {
+            const PortDefinition* out = def.find_output(sd.factor);
+            if (!out || out->type.concrete != ValueType::Float)
+                r.error(fmt::format("\"factor\" names a float output, and \"{}\" is none", sd.factor), "/derivative/factor");
+        }
+    }
+    if (sd.rule == Rule::AddC) {
+        if (r.required(d, "weight", "/derivative", sd.weight)) {
+            const PortDefinition* in = def.find_input(sd.weight);
+            if (!in || in->type.concrete != ValueType::Float)
+                r.error(fmt::format("\"weight\" names a float input, and \"{}\" is none", sd.weight), "/derivative/weight");
+        }
+        if (!def.find_input("c") || def.find_input("c")->type.concrete != ValueType::Vec3)
+            r.error("an add_c stage has a vec3 input \"c\"", "/inputs");
+    }
+    auto is_z = [](const std::vector<PortDefinition>& ports) {
+        return !ports.empty() && ports[0].name == "z" && ports[0].type.concrete == ValueType::Vec3;
+    };
+    if (!is_z(def.inputs) || !is_z(def.outputs)) r.error("a stage's first input and first output are \"z\" (vec3)", "/inputs");
+    if (!def.generic.empty()) r.error("a stage is not generic", "/generic");
+}
+
+}  // namespace
+
 std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_path, std::string_view json_text,
                                                       Diagnostics& diag) {
     Diagnostics parse_diag;
@@ -36,7 +72,7 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
     });
     if (!r.is_object(j, "")) return nullptr;
     r.unknown_keys(j, "", {"type", "summary", "doc", "context", "inputs", "outputs", "generic", "lipschitz",
-                           "running_derivative", "effects", "example"});
+                           "running_derivative", "derivative", "effects", "example"});
 
     auto def = std::make_unique<NodeDefinition>();
     def->json_path = json_path;
@@ -90,6 +126,9 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
         bool has_bias = std::any_of(def->inputs.begin(), def->inputs.end(), [](auto& p) { return p.knob == "bias"; });
         if (!has_bias) r.error("a node with a running derivative needs an input with \"knob\": \"bias\"", "/inputs");
     }
+    if (const json* d = r.object_field(j, "derivative", "")) read_stage_derivative(*d, *def, r);
+    if (def->namespace_name() == "stage" && !def->is_stage())
+        r.error("a stage.* node declares its \"derivative\": {\"rule\": \"isometry\" | \"conformal\" | \"power\" | \"add_c\"}", "");
     if (const json* effects = r.array_field(j, "effects", ""))
         for (std::size_t i = 0; i < effects->size(); ++i) {
             std::string ptr = fmt::format("/effects/{}", i), name;
@@ -126,7 +165,7 @@ void NodeLibrary::add_definition(const std::string& json_path, std::string_view 
                                  std::string glsl_text, Diagnostics& diag) {
     auto def = parse_node_definition(json_path, json_text, diag);
     if (!def) return;
-    if (!def->builtin_input) {
+    if (!def->builtin_input && !def->generated_body()) {
         if (glsl_text.empty()) {
             diag.error(fmt::format("{}: no GLSL body {} beside the definition", json_path, glsl_path));
             return;

@@ -4,6 +4,7 @@
 #include <functional>
 #include <set>
 
+#include "codegen/formula_glsl.h"
 #include "graph/literal.h"
 
 namespace fg {
@@ -21,6 +22,28 @@ std::shared_ptr<NodeDefinition> make_custom_definition(const GraphNode& n, std::
     for (char& c : safe)
         if (c == '-') c = '_';
     def->function = fmt::format("fg_custom_{}_{}", index, safe);
+    return def;
+}
+
+// A fractal.formula node's definition: the library's ports, then one input per graph parameter
+// its body uses, and a function of its own whose body formula_glsl() writes.
+std::shared_ptr<NodeDefinition> make_formula_definition(const NodeDefinition& library_def, const FormulaProgram& prog,
+                                                        const Graph& g, const GraphNode& n, std::size_t index) {
+    auto def = std::make_shared<NodeDefinition>(library_def);
+    for (const auto& param : prog.params) {
+        PortDefinition port;
+        port.name = formula_param_input(param);
+        const ParamDecl* decl = g.find_param(param);
+        port.type.concrete = decl ? decl->type : ValueType::Float;
+        def->inputs.push_back(port);
+    }
+    def->running_derivative = prog.describe();
+    // The seed disc's estimate moves up to twice as fast as the point (measured: docs/fractals.md).
+    if (prog.estimate == FormulaProgram::Estimate::Sheet) def->lipschitz["distance"] = "2 * L(p)";
+    std::string safe = n.id;
+    for (char& c : safe)
+        if (c == '-') c = '_';
+    def->function = fmt::format("fg_formula_{}_{}", index, safe);
     return def;
 }
 
@@ -68,6 +91,28 @@ private:
         for (const auto& n : g_.nodes)
             if (!seen.count(n.id))
                 diag_.note(fmt::format("node \"{}\" reaches no output and is removed", n.id), n.pointer, n.id);
+    }
+
+    // A body's $param feeds a stage port of its own type (or an int param a float port).
+    bool check_formula_params(const FormulaProgram& prog, const std::string& id) {
+        bool ok = true;
+        for (const auto& group : prog.groups)
+            for (const auto& s : group.stages)
+                for (std::size_t a = 0; a < s.args.size(); ++a) {
+                    if (s.args[a].kind != FormulaArg::Kind::Input) continue;
+                    const auto& name = prog.params[static_cast<std::size_t>(s.args[a].input - kFormulaFixedPorts)];
+                    const ParamDecl* decl = g_.find_param(name);
+                    ValueType want = *s.def->inputs[a].type.concrete;
+                    if (decl && decl->type == ValueType::Float && is_vector(want)) continue;  // broadcast, as literals are
+                    if (decl && !assignable(decl->type, want)) {
+                        diag_.error(fmt::format("type mismatch: input \"{}\" of {} is {}, but parameter \"${}\" is {}",
+                                                s.def->inputs[a].name, s.def->type, type_name(want), name,
+                                                type_name(decl->type)),
+                                    s.pointer + "/inputs/" + s.def->inputs[a].name, id);
+                        ok = false;
+                    }
+                }
+        return ok;
     }
 
     // Resolve a binding to an IR input (type not yet checked against the port).
@@ -133,11 +178,30 @@ private:
         return have == want || (have == ValueType::Int && want == ValueType::Float);
     }
 
-    void lower_node(const GraphNode& gn) {
+    void lower_node(const GraphNode& node) {
         IrNode n;
-        n.id = gn.id;
-        n.pointer = gn.pointer;
-        if (gn.custom) {
+        n.id = node.id;
+        n.pointer = node.pointer;
+        GraphNode with_params;  // a formula node with its body's parameters as inputs of its own
+        const GraphNode& gn = node.formula ? with_params : node;
+        if (node.formula) {
+            with_params = node;
+            n.formula = build_formula_program(*node.formula, lib_, g_.params, node.id, diag_);
+            const NodeDefinition* library_def = def_of(node);
+            if (!n.formula || !library_def) return;
+            if (!check_formula_params(*n.formula, node.id)) return;
+            n.custom_def = make_formula_definition(*library_def, *n.formula, g_, node, ir_.nodes.size());
+            n.def = n.custom_def.get();
+            n.custom_code = formula_glsl(*n.formula);
+            n.custom_code_pointer = node.formula->pointer;
+            for (const auto& param : n.formula->params) {
+                Binding b;
+                b.kind = Binding::Kind::Param;
+                b.param = param;
+                b.pointer = node.formula->pointer;
+                with_params.inputs[formula_param_input(param)] = b;
+            }
+        } else if (gn.custom) {
             n.custom_def = make_custom_definition(gn, ir_.nodes.size());
             n.def = n.custom_def.get();
             n.custom_code = gn.custom->code;

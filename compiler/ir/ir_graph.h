@@ -11,6 +11,7 @@
 #include "common/value_type.h"
 #include "graph/graph.h"
 #include "graph/node_definition.h"
+#include "ir/formula_program.h"
 
 namespace fg {
 
@@ -39,6 +40,7 @@ struct IrNode {
     std::shared_ptr<NodeDefinition> custom_def;  // custom.glsl: a definition made from its ports
     std::string custom_code;
     std::string custom_code_pointer;
+    std::shared_ptr<const FormulaProgram> formula;  // fractal.formula: its body (custom_code is its GLSL)
     std::optional<ValueType> generic;            // what T is for this node
     std::vector<IrInput> inputs;                 // one per def->inputs, same order
     std::vector<ValueType> output_types;         // one per def->outputs

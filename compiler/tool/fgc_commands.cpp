@@ -70,6 +70,7 @@ void print_summary(const PackManifest& m, std::size_t bytes) {
         const auto* iters = m.find_spec(f.iterations_spec);
         fmt::print("  fractal:    {} ({}): bias {}, iterations {}\n", f.node, f.type,
                    bias ? fmt::format("{:g}", bias->value) : "param", iters ? fmt::format("{:g}", iters->value) : "param");
+        if (f.type == kFormulaNodeType) fmt::print("              derived by fgc: {}\n", f.running_derivative);
     }
     for (const auto& p : m.params)
         fmt::print("  param:      {} {} = {} [{}, {}]\n", type_name(p.type), p.name, p.value.text(),
@@ -191,6 +192,17 @@ std::string cell(std::string text) {
     return text;
 }
 
+std::string stage_rule_text(const NodeDefinition& d) {
+    switch (d.derivative.rule) {
+        case StageDerivative::Rule::Isometry: return "isometry (dr unchanged)";
+        case StageDerivative::Rule::Conformal: return fmt::format("conformal (dr times output {})", d.derivative.factor);
+        case StageDerivative::Rule::Power: return fmt::format("power map (dr times output {}; log estimate)", d.derivative.factor);
+        case StageDerivative::Rule::AddC: return fmt::format("add c (dr plus |{}| when c is the point)", d.derivative.weight);
+        case StageDerivative::Rule::None: break;
+    }
+    return {};
+}
+
 std::string markdown_node(const NodeDefinition& d) {
     std::string s = fmt::format("### `{}`\n\n{}\n\n{}\n\n", d.type, d.summary, d.doc);
     if (d.context == NodeContext::Shade) s += "*Shading only*: evaluated at the hit, never inside the march.\n\n";
@@ -223,6 +235,7 @@ std::string markdown_node(const NodeDefinition& d) {
     }
     if (!d.running_derivative.empty())
         s += fmt::format("Running derivative (guarded by the conservative bias): `{}`\n\n", d.running_derivative);
+    if (d.is_stage()) s += fmt::format("Derivative, as a formula stage: {}\n\n", stage_rule_text(d));
     if (!d.effects.empty()) {
         std::vector<std::string> e;
         for (auto x : d.effects) e.emplace_back(effect_name(x));
@@ -241,6 +254,15 @@ int nodes(const Common& c, const std::string& type, bool markdown) {
     Diagnostics diag;
     auto lib = library_for(c, diag);
     if (diag.has_errors()) return report(diag, "node library");
+    if (!type.empty() && type.find('.') == std::string::npos) {  // a namespace: its nodes
+        bool any = false;
+        for (const auto* d : lib.all())
+            if (d->namespace_name() == type) {
+                fmt::print("  {:<24} {}\n", d->type, d->summary);
+                any = true;
+            }
+        if (any) return 0;
+    }
     if (!type.empty()) {
         const auto* d = lib.find(type);
         if (!d) {
@@ -259,6 +281,7 @@ int nodes(const Common& c, const std::string& type, bool markdown) {
         for (const auto& p : d->outputs) fmt::print("    {}\n", port_line(p, false));
         for (const auto& [out, rule] : d->lipschitz) fmt::print("  lipschitz {}: {}\n", out, rule);
         if (!d->running_derivative.empty()) fmt::print("  running derivative: {}\n", d->running_derivative);
+        if (d->is_stage()) fmt::print("  derivative: {}\n", stage_rule_text(*d));
         return 0;
     }
     if (markdown) {

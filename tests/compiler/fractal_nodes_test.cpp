@@ -17,7 +17,7 @@ namespace {
 std::vector<const NodeDefinition*> fractal_nodes() {
     std::vector<const NodeDefinition*> out;
     for (const auto* d : NodeLibrary::builtin().all())
-        if (d->namespace_name() == "fractal") out.push_back(d);
+        if (d->namespace_name() == "fractal" && !d->generated_body()) out.push_back(d);
     return out;
 }
 

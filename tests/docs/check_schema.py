@@ -24,6 +24,8 @@ broken = [
     {"format": "fractograph-graph", "version": 1, "nodes": [{"id": "a b", "type": "prim.sphere"}],
      "outputs": {"distance": "a"}},
     {"format": "fractograph-graph", "version": 1, "nodes": [], "outputs": {"distance": "x", "colour": "y"}},
+    {"format": "fractograph-graph", "version": 1, "outputs": {"distance": "f"},                 # a body of no group
+     "nodes": [{"id": "f", "type": "fractal.formula", "formula": {"groups": []}}]},
 ]
 for b in broken:
     if validator.is_valid(b):

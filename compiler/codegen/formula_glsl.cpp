@@ -1,0 +1,116 @@
+#include "formula_glsl.h"
+
+#include <fmt/format.h>
+
+namespace fg {
+
+namespace {
+
+using Rule = StageDerivative::Rule;
+
+std::string value(const FormulaProgram& prog, const FormulaStage& s, const FormulaArg& a) {
+    switch (a.kind) {
+        case FormulaArg::Kind::Orbit: return a.stage < 0 ? "fz_z" : fmt::format("fz_s{}_0", a.stage);
+        case FormulaArg::Kind::C: return "fz_c";
+        case FormulaArg::Kind::Input: {
+            std::string v = formula_param_input(prog.params[static_cast<std::size_t>(a.input - kFormulaFixedPorts)]);
+            return a.splat ? fmt::format("vec{}({})", a.splat, v) : v;
+        }
+        case FormulaArg::Kind::Constant: break;
+    }
+    (void)s;
+    return a.constant.glsl();
+}
+
+// One iteration of a group: each stage's outputs fz_s<k>_<o> and derivative fz_d<k>.
+std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, const std::string& indent) {
+    std::string out;
+    for (std::size_t k = 0; k < g.stages.size(); ++k) {
+        const FormulaStage& s = g.stages[k];
+        std::string decl, args;
+        for (std::size_t a = 0; a < s.args.size(); ++a) args += (a ? ", " : "") + value(prog, s, s.args[a]);
+        for (std::size_t o = 0; o < s.def->outputs.size(); ++o) {
+            std::string type(type_name(*s.def->outputs[o].type.concrete));
+            decl += fmt::format("{}{} fz_s{}_{};", decl.empty() ? "" : " ", type, k, o);
+            args += fmt::format(", fz_s{}_{}", k, o);
+        }
+        int from = s.args[0].stage;
+        std::string d_in = from < 0 ? "fz_dr_in" : fmt::format("fz_d{}", from);
+        std::string d;
+        switch (s.def->derivative.rule) {
+            case Rule::Conformal:
+            case Rule::Power: d = fmt::format("fg_scale_dr({}, fz_s{}_{})", d_in, k, s.factor_output); break;
+            case Rule::AddC:
+                d = prog.julia ? d_in : fmt::format("{} + abs({})", d_in, value(prog, s, s.args[static_cast<std::size_t>(s.weight_arg)]));
+                break;
+            default: d = d_in; break;
+        }
+        out += fmt::format("{}{}  // {} ({})\n", indent, decl, s.id, s.def->type);
+        out += fmt::format("{}{}({});\n", indent, s.def->function_name(), args);
+        out += fmt::format("{}float fz_d{} = {};\n", indent, k, d);
+    }
+    out += fmt::format("{}fz_z = fz_s{}_0;\n", indent, g.z_out);
+    out += fmt::format("{}fz_dr = fg_conservative_dr(fz_dr, bias, fz_d{});\n", indent, g.z_out);
+    out += fmt::format("{}fz_r2 = dot(fz_z, fz_z);\n", indent);
+    out += fmt::format("{}trap = min(trap, vec4(abs(fz_z.x), abs(fz_z.y), abs(fz_z.z), fz_r2));\n", indent);
+    return out;
+}
+
+}  // namespace
+
+std::string formula_param_input(const std::string& param) { return "u_" + param; }
+
+std::string formula_glsl(const FormulaProgram& prog) {
+    std::string out;
+    out += "vec3 fz_z = p;\n";
+    out += prog.julia ? "vec3 fz_c = c;\n" : "vec3 fz_c = p;\n";
+    out += "float fz_dr = 1.0;\n";
+    out += "float fz_r2 = dot(fz_z, fz_z);\n";
+    out += "float fz_bail2 = bailout * bailout;\n";
+    out += "trap = vec4(abs(fz_z.x), abs(fz_z.y), abs(fz_z.z), fz_r2);\n";
+    out += "int fz_i = 0;\n";
+    std::string indent = prog.repeat ? "    " : "";
+    if (prog.repeat) out += "do {\n";
+    for (const auto& seg : prog.segments) {
+        const auto& g = prog.groups[static_cast<std::size_t>(seg.group)];
+        out += fmt::format("{}// {}{}\n", indent, g.name,
+                           seg.count ? fmt::format(" for {} iteration{}", seg.count, seg.count > 1 ? "s" : "")
+                                     : " for every iteration left");
+        if (seg.count)
+            out += fmt::format("{}for (int fz_n = 0; fz_n < {} && fz_i < iterations; fz_n++, fz_i++) {{\n", indent, seg.count);
+        else
+            out += fmt::format("{}for (; fz_i < iterations; fz_i++) {{\n", indent);
+        out += indent + "    fg_count_fractal_iteration();\n";
+        out += indent + "    if (fz_r2 > fz_bail2) break;\n";
+        out += indent + "    float fz_dr_in = fz_dr;\n";
+        out += iteration(prog, g, indent + "    ");
+        out += indent + "}\n";
+    }
+    if (prog.repeat) out += "} while (fz_i < iterations && fz_r2 <= fz_bail2);\n";
+    out += "float fz_r = sqrt(fz_r2);\n";
+    switch (prog.estimate) {
+        case FormulaProgram::Estimate::Linear: out += "distance = fz_r / fz_dr;\n"; break;
+        // log(r) * r tends to 0 at r = 0: the max keeps log finite there.
+        case FormulaProgram::Estimate::Log: out += "distance = 0.5 * log(max(fz_r, FG_TINY)) * fz_r / fz_dr;\n"; break;
+        case FormulaProgram::Estimate::Box:
+            out += "vec3 fz_q = abs(fz_z) - vec3(1.0);\n";
+            out += "distance = (length(max(fz_q, vec3(0.0))) + min(max(fz_q.x, max(fz_q.y, fz_q.z)), 0.0)) / max(fz_dr, FG_TINY);\n";
+            break;
+        case FormulaProgram::Estimate::Sheet:
+            // The second term is about |z.z| away from the axis and vanishes on it: the sheets stay thin.
+            out += "float fz_rxy = sqrt(fz_z.x * fz_z.x + fz_z.y * fz_z.y);\n";
+            out += fmt::format("float fz_seed = max(fz_rxy - {}, abs(fz_rxy * fz_z.z) / max(length(fz_z), FG_TINY));\n",
+                               Constant::scalar(ValueType::Float, prog.sheet_radius).glsl());
+            out += "distance = fz_seed / max(fz_dr, FG_TINY);\n";
+            break;
+    }
+    if (prog.bound_radius > 0.0) {
+        // Far away the estimate may grow faster than the true distance; the set lies in the bound's
+        // ball, so beyond twice its radius the distance to the ball bounds it.
+        out += fmt::format("float fz_reach = length(p) - {};\n", Constant::scalar(ValueType::Float, prog.bound_radius).glsl());
+        out += fmt::format("if (fz_reach > {}) distance = min(distance, fz_reach);\n", Constant::scalar(ValueType::Float, prog.bound_radius).glsl());
+    }
+    return out;
+}
+
+}  // namespace fg

@@ -1,0 +1,123 @@
+#include "cpu_formula.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace fg {
+
+namespace glsl {
+// The prelude's guards, compiled into the twin with the node bodies (cpu_nodes.cpp).
+double fg_conservative_dr(double dr, double bias, double next);
+double fg_scale_dr(double dr, double factor);
+}  // namespace glsl
+
+namespace {
+using Rule = StageDerivative::Rule;
+constexpr double kTiny = 1e-20;  // the prelude's FG_TINY
+}  // namespace
+
+std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const FormulaProgram> program,
+                                                     const std::string& node_id, const std::string& pointer,
+                                                     Diagnostics& diag) {
+    auto f = std::make_shared<CpuFormula>();
+    for (const auto& g : program->groups) {
+        if (g.stages.size() > kMaxStages) {
+            diag.error(fmt::format("group \"{}\" has {} stages; the CPU twin runs at most {}", g.name, g.stages.size(),
+                                   kMaxStages),
+                       pointer, node_id);
+            return nullptr;
+        }
+        auto& fns = f->functions_.emplace_back();
+        for (const auto& s : g.stages) {
+            CpuNodeFunction fn = find_cpu_node(s.def->type, std::nullopt);
+            if (!fn) {
+                diag.error(fmt::format("stage \"{}\" ({}) has no CPU twin", s.id, s.def->type), s.pointer, node_id);
+                return nullptr;
+            }
+            fns.push_back(fn);
+        }
+    }
+    f->program_ = std::move(program);
+    return f;
+}
+
+// One pass through a group: as formula_glsl()'s iteration.
+void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3& z, double& dr, double bias) const {
+    const FormulaProgram& prog = *program_;
+    const auto& g = prog.groups[static_cast<std::size_t>(group)];
+    const auto& fns = functions_[static_cast<std::size_t>(group)];
+    CpuValue outs[kMaxStages][4];
+    double d[kMaxStages];
+    CpuValue args[8];
+    auto value = [&](const FormulaArg& a) {
+        switch (a.kind) {
+            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(z) : outs[a.stage][0];
+            case FormulaArg::Kind::C: return CpuValue::of(c);
+            case FormulaArg::Kind::Input: return a.splat ? CpuValue::of(glm::dvec4(in[a.input].f())) : in[a.input];
+            case FormulaArg::Kind::Constant: break;
+        }
+        return CpuValue::of(a.constant);
+    };
+    for (std::size_t k = 0; k < g.stages.size(); ++k) {
+        const FormulaStage& s = g.stages[k];
+        for (std::size_t a = 0; a < s.args.size() && a < 8; ++a) args[a] = value(s.args[a]);
+        fns[k](args, outs[k]);
+        int from = s.args[0].stage;
+        double d_in = from < 0 ? dr : d[from];
+        switch (s.def->derivative.rule) {
+            case Rule::Conformal:
+            case Rule::Power: d[k] = glsl::fg_scale_dr(d_in, outs[k][s.factor_output].f()); break;
+            case Rule::AddC: d[k] = prog.julia ? d_in : d_in + std::abs(args[s.weight_arg].f()); break;
+            default: d[k] = d_in; break;
+        }
+    }
+    z = outs[g.z_out][0].v3();
+    dr = glsl::fg_conservative_dr(dr, bias, d[g.z_out]);
+}
+
+void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
+    const FormulaProgram& prog = *program_;
+    const glm::dvec3 p = in[kFormulaP].v3();
+    const glm::dvec3 c = prog.julia ? in[kFormulaC].v3() : p;
+    const int iterations = in[kFormulaIterations].i();
+    const double bail2 = in[kFormulaBailout].f() * in[kFormulaBailout].f(), bias = in[kFormulaBias].f();
+    glm::dvec3 z = p;
+    double dr = 1.0, r2 = glm::dot(z, z);
+    glm::dvec4 trap(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2);
+    int i = 0;
+    do {
+        for (const auto& seg : prog.segments)
+            for (int n = 0; (seg.count == 0 || n < seg.count) && i < iterations; ++n, ++i) {
+                if (r2 > bail2) break;
+                iterate(seg.group, in, c, z, dr, bias);
+                r2 = glm::dot(z, z);
+                trap = glm::min(trap, glm::dvec4(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2));
+            }
+    } while (prog.repeat && i < iterations && r2 <= bail2);
+    const double r = std::sqrt(r2);
+    double distance = r / dr;
+    switch (prog.estimate) {
+        case FormulaProgram::Estimate::Linear: break;
+        case FormulaProgram::Estimate::Log: distance = 0.5 * std::log(std::max(r, kTiny)) * r / dr; break;
+        case FormulaProgram::Estimate::Box: {
+            glm::dvec3 q = glm::abs(z) - glm::dvec3(1.0);
+            distance = (glm::length(glm::max(q, glm::dvec3(0.0))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0)) /
+                       std::max(dr, kTiny);
+            break;
+        }
+        case FormulaProgram::Estimate::Sheet: {
+            double rxy = std::sqrt(z.x * z.x + z.y * z.y);
+            double seed = std::max(rxy - prog.sheet_radius, std::abs(rxy * z.z) / std::max(glm::length(z), kTiny));
+            distance = seed / std::max(dr, kTiny);
+            break;
+        }
+    }
+    if (prog.bound_radius > 0.0) {
+        double reach = glm::length(p) - prog.bound_radius;
+        if (reach > prog.bound_radius) distance = std::min(distance, reach);
+    }
+    out[0] = CpuValue::of(distance);
+    out[1] = CpuValue::of(trap);
+}
+
+}  // namespace fg

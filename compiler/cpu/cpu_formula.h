@@ -1,0 +1,31 @@
+#pragma once
+// The CPU twin of a fractal.formula node: the program its GLSL runs (codegen/formula_glsl.h),
+// interpreted in double over the stage bodies compiled into the twin.
+#include <memory>
+#include <vector>
+
+#include "common/diagnostics.h"
+#include "cpu/cpu_node_registry.h"
+#include "cpu/cpu_value.h"
+#include "ir/formula_program.h"
+
+namespace fg {
+
+class CpuFormula {
+public:
+    // Stages per group the twin runs (a longer group is refused with a message).
+    static constexpr std::size_t kMaxStages = 32;
+
+    static std::shared_ptr<const CpuFormula> create(std::shared_ptr<const FormulaProgram> program, const std::string& node_id,
+                                                    const std::string& pointer, Diagnostics& diag);
+    // `in`: the formula node's inputs; `out`: distance, trap.
+    void run(const CpuValue* in, CpuValue* out) const;
+
+private:
+    std::shared_ptr<const FormulaProgram> program_;
+    std::vector<std::vector<CpuNodeFunction>> functions_;   // per group, per stage
+
+    void iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3& z, double& dr, double bias) const;
+};
+
+}  // namespace fg

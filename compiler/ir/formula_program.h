@@ -1,0 +1,82 @@
+#pragma once
+// A fractal.formula node's body, resolved: stages in evaluation order with their arguments, the
+// schedule of groups, and what the compiler derived from the stages' declared derivatives (the
+// estimate form). GLSL generation (codegen/formula_glsl.h) and the CPU twin (cpu/cpu_formula.h)
+// both run exactly this.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/diagnostics.h"
+#include "graph/graph.h"
+#include "graph/node_library.h"
+
+namespace fg {
+
+// The formula node's own inputs, in nodes/fractal/formula.json's order; after them come one input
+// per graph parameter the body uses.
+enum FormulaPort { kFormulaP = 0, kFormulaC, kFormulaIterations, kFormulaBailout, kFormulaBias, kFormulaFixedPorts };
+
+struct FormulaArg {
+    enum class Kind {
+        Orbit,     // the stage's z: the point entering the group, or stage `stage`'s z
+        C,         // the formula's c: the sample point, or the Julia constant
+        Constant,  // a literal, or the port's default
+        Input,     // the formula node's input `input` (a graph parameter)
+    } kind = Kind::Constant;
+    int stage = -1;
+    Constant constant;
+    int input = -1;
+    int splat = 0;   // Input: a float parameter feeding a vector port of this many components
+};
+
+struct FormulaStage {
+    std::string id;
+    std::string pointer;
+    const NodeDefinition* def = nullptr;
+    std::vector<FormulaArg> args;   // one per def->inputs
+    int factor_output = -1;         // Conformal and Power stages: the output holding the factor
+    int weight_arg = -1;            // AddC stages: the argument holding the weight
+};
+
+struct FormulaGroupProgram {
+    std::string name;
+    std::vector<FormulaStage> stages;   // each stage's z comes from an earlier one or the entry
+    int z_out = 0;                      // the stage whose z leaves the group
+};
+
+struct FormulaSegmentProgram {
+    int group = 0;
+    int count = 0;   // 0: every iteration left
+};
+
+struct FormulaProgram {
+    std::vector<FormulaGroupProgram> groups;
+    std::vector<FormulaSegmentProgram> segments;
+    bool repeat = false;
+    bool julia = false;
+    // The distance estimate: the last orbit point's distance to a seed shape, over dr.
+    enum class Estimate {
+        Linear,  // |z| / dr: folding and IFS formulas
+        Log,     // 0.5 log|z| |z| / dr: power maps
+        Box,     // the unit cube [-1, 1]^3: Menger-type IFS
+        Sheet,   // Knighty's seed disc of radius sheet_radius in the plane z = 0: pseudo-Kleinian caves
+    } estimate = Estimate::Linear;
+    double sheet_radius = 100.0;
+    double bound_radius = 0.0;          // 0: none
+    std::vector<std::string> params;    // the graph parameter behind each input from kFormulaFixedPorts on
+
+    // The derivative the compiler composed, in words, for fgc info and the manifest.
+    std::string describe() const;
+    // Every stage definition the body calls, once each.
+    std::vector<const NodeDefinition*> stage_definitions() const;
+};
+
+// Resolves a loaded body against the library; problems are reported at the body's pointers.
+// `params`: the graph's, whose types say where a float parameter is broadcast to a vector port.
+std::shared_ptr<const FormulaProgram> build_formula_program(const FormulaBody& body, const NodeLibrary& lib,
+                                                            const std::vector<ParamDecl>& params,
+                                                            const std::string& node_id, Diagnostics& diag);
+
+}  // namespace fg

@@ -1,0 +1,11 @@
+void fg_stage_sphere_fold(vec3 z, float min_radius, float fixed_radius, OUT(vec3) folded, OUT(float) gain)
+{
+    // Squared radii with a floor: the fold divides by them.
+    float min_r2 = max(min_radius * min_radius, 1e-12);
+    float fixed_r2 = max(fixed_radius * fixed_radius, min_r2);
+    float r2 = dot(z, z);
+    gain = 1.0;
+    if (r2 < min_r2) gain = fixed_r2 / min_r2;
+    else if (r2 < fixed_r2) gain = fixed_r2 / r2;
+    folded = z * gain;
+}
