@@ -124,7 +124,8 @@ TEST_P(CalibratedHardCase, the_bubble_search_finds_no_overshoot_at_the_graph_bia
 // (not the node's default). On samples the calibration did not see, it keeps the surface the march
 // sees within the growth budget and leaves no more overshoots than the unguarded estimate.
 TEST_P(CalibratedGalleryGraph, carries_a_calibrated_bias_that_keeps_the_surface_and_cuts_overshoots) {
-    std::string text = read_source_file("graphs/gallery/" + GetParam() + ".json");
+    const std::string& name = GetParam();
+    std::string text = read_source_file((name.find('/') == std::string::npos ? "graphs/gallery/" : "graphs/") + name + ".json");
     auto g = lower(text);
     auto knobs = BubbleSearch::bias_knobs(g->ir);
     if (knobs.empty()) GTEST_SKIP() << "no fractal with a bias knob";
@@ -167,4 +168,11 @@ INSTANTIATE_TEST_SUITE_P(Gallery, CalibratedGalleryGraph, ::testing::ValuesIn(so
                          [](const auto& info) { return test_name(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(Cases, CalibratedHardCase, ::testing::ValuesIn(hard_case_names()),
+                         [](const auto& info) { return test_name(info.param); });
+// Formula graphs meet the gallery's standard; all but the power-8 bulb are also free of overshoots
+// (its bias, like the gallery bulb's, is the one with the fewest within the growth budget).
+INSTANTIATE_TEST_SUITE_P(Formulas, CalibratedGalleryGraph, ::testing::ValuesIn(formula_case_names()),
+                         [](const auto& info) { return test_name(info.param); });
+INSTANTIATE_TEST_SUITE_P(Formulas, CalibratedHardCase, ::testing::Values("formulas/bulb_box_hybrid", "formulas/mandelbox",
+                                                                         "formulas/menger_twisted", "formulas/kleinian"),
                          [](const auto& info) { return test_name(info.param); });

@@ -17,7 +17,15 @@ std::string test_name(std::string name) {
     return name;
 }
 
-std::string hard_case_text(const std::string& name) { return read_source_file("graphs/hard/" + name + ".json"); }
+std::vector<std::string> formula_case_names() {
+    std::vector<std::string> names;
+    for (const auto& n : source_graph_names("graphs/formulas")) names.push_back("formulas/" + n);
+    return names;
+}
+
+std::string hard_case_text(const std::string& name) {
+    return read_source_file((name.find('/') == std::string::npos ? "graphs/hard/" : "graphs/") + name + ".json");
+}
 
 namespace {
 

@@ -110,3 +110,5 @@ TEST_P(HardCase, renders_bit_identically_twice) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, HardCase, ::testing::ValuesIn(hard_case_names()),
                          [](const auto& info) { return test_name(info.param); });
+INSTANTIATE_TEST_SUITE_P(Formulas, HardCase, ::testing::ValuesIn(formula_case_names()),
+                         [](const auto& info) { return test_name(info.param); });
