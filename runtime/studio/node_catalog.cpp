@@ -35,7 +35,11 @@ nlohmann::json node_catalog_json(const NodeLibrary& library) {
                          {"shade_only", def->context == NodeContext::Shade},
                          {"inputs", inputs},
                          {"outputs", outputs},
-                         {"generic", generic}});
+                         {"generic", generic},
+                         // Stages live in a formula's body, not on the canvas; a new node starts from
+                         // its example (a formula node, from a whole body).
+                         {"stage", def->is_stage()},
+                         {"example", def->example.is_object() ? def->example : nlohmann::json::object()}});
     }
     return nodes;
 }

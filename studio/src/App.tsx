@@ -222,11 +222,13 @@ function Studio() {
       const node: GraphNodeDoc =
         type === "custom.glsl"
           ? { id, type, ports: { inputs: [{ name: "p", type: "vec3", default: "position" }], outputs: [{ name: "distance", type: "float" }] }, lipschitz: 1.0, code: ["distance = length(p) - 0.5;"] }
-          : { id, type };
+          : type === "fractal.formula"
+            ? { id, type, ...(structuredClone(catalog.find((d) => d.type === type)?.example ?? {}) as object) }
+            : { id, type };
       const centre = flow.screenToFlowPosition({ x: window.innerWidth * 0.4, y: window.innerHeight * 0.45 });
       commit(addNode(current, node), { ...snapshot.current.positions, [id]: [Math.round(centre.x), Math.round(centre.y)] });
     },
-    [commit, flow],
+    [commit, flow, catalog],
   );
 
   // A wire the compiler would refuse is not drawn: its reason is shown instead. The check is a round

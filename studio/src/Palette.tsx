@@ -9,7 +9,8 @@ export function Palette({ nodes, onAdd }: { nodes: NodeDef[]; onAdd: (type: stri
   const [hover, setHover] = useState<NodeDef | null>(null);
   const groups = useMemo(() => {
     const q = query.trim().toLowerCase();
-    const found = nodes.filter((n) => !q || n.type.includes(q) || n.summary.toLowerCase().includes(q));
+    // Formula stages belong inside a fractal.formula's body, which is edited in the graph's JSON.
+    const found = nodes.filter((n) => !n.stage && (!q || n.type.includes(q) || n.summary.toLowerCase().includes(q)));
     const byCategory = new Map<string, NodeDef[]>();
     for (const n of found) byCategory.set(n.category, [...(byCategory.get(n.category) ?? []), n]);
     return [...byCategory.entries()];

@@ -24,6 +24,8 @@ export interface NodeDef {
   inputs: PortDef[];
   outputs: PortDef[];
   generic: string[];
+  stage: boolean;
+  example: { inputs?: Record<string, unknown>; formula?: unknown };
 }
 
 export interface Diagnostic {

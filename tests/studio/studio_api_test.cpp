@@ -110,6 +110,26 @@ TEST_F(StudioApiTest, ServesThePageAndTheNodeLibrary) {
     EXPECT_TRUE(bulb);
 }
 
+// The palette leaves formula stages out (they live in a body), and a formula node added from it
+// starts from its example's whole body: a node that compiles, not an error.
+TEST_F(StudioApiTest, MarksFormulaStagesAndGivesTheFormulaNodeABody) {
+    auto nodes = json::parse(client().Get("/api/nodes")->body)["nodes"];
+    json example;
+    std::size_t stages = 0;
+    for (const auto& n : nodes) {
+        stages += n["stage"].get<bool>();
+        if (n["type"] == "fractal.formula") example = n["example"];
+    }
+    EXPECT_GE(stages, 10u);
+    ASSERT_TRUE(example.contains("formula")) << example;
+    json g = json::parse(R"({"format": "fractograph-graph", "version": 1, "nodes": [], "outputs": {"distance": "f.distance"}})");
+    json node = {{"id", "f"}, {"type", "fractal.formula"}};
+    for (auto it = example.begin(); it != example.end(); ++it) node[it.key()] = it.value();
+    g["nodes"].push_back(node);
+    fg::Diagnostics diag;
+    EXPECT_TRUE(fg::load_and_lower(g.dump(), fg::NodeLibrary::builtin(), diag)) << diag.format();
+}
+
 TEST_F(StudioApiTest, RefusesAForeignHostOrOrigin) {
     auto c = client();
     auto r = c.Get("/api/nodes", {{"Host", "evil.example:80"}});
