@@ -29,6 +29,12 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
         }
         auto& fns = f->functions_.emplace_back();
         for (const auto& s : g.stages) {
+            if (s.def->inputs.size() > kMaxStageInputs || s.def->outputs.size() > kMaxStageOutputs) {
+                diag.error(fmt::format("stage \"{}\" ({}) has more ports than the CPU twin passes ({} in, {} out)", s.id,
+                                       s.def->type, kMaxStageInputs, kMaxStageOutputs),
+                           s.pointer, node_id);
+                return nullptr;
+            }
             CpuNodeFunction fn = find_cpu_node(s.def->type, std::nullopt);
             if (!fn) {
                 diag.error(fmt::format("stage \"{}\" ({}) has no CPU twin", s.id, s.def->type), s.pointer, node_id);
@@ -46,9 +52,9 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3
     const FormulaProgram& prog = *program_;
     const auto& g = prog.groups[static_cast<std::size_t>(group)];
     const auto& fns = functions_[static_cast<std::size_t>(group)];
-    CpuValue outs[kMaxStages][4];
+    CpuValue outs[kMaxStages][kMaxStageOutputs];
     double d[kMaxStages];
-    CpuValue args[8];
+    CpuValue args[kMaxStageInputs];
     auto value = [&](const FormulaArg& a) {
         switch (a.kind) {
             case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(z) : outs[a.stage][0];
@@ -60,7 +66,7 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3
     };
     for (std::size_t k = 0; k < g.stages.size(); ++k) {
         const FormulaStage& s = g.stages[k];
-        for (std::size_t a = 0; a < s.args.size() && a < 8; ++a) args[a] = value(s.args[a]);
+        for (std::size_t a = 0; a < s.args.size(); ++a) args[a] = value(s.args[a]);
         fns[k](args, outs[k]);
         int from = s.args[0].stage;
         double d_in = from < 0 ? dr : d[from];

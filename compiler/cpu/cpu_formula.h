@@ -15,6 +15,7 @@ class CpuFormula {
 public:
     // Stages per group the twin runs (a longer group is refused with a message).
     static constexpr std::size_t kMaxStages = 32;
+    static constexpr std::size_t kMaxStageInputs = 8, kMaxStageOutputs = 4;
 
     static std::shared_ptr<const CpuFormula> create(std::shared_ptr<const FormulaProgram> program, const std::string& node_id,
                                                     const std::string& pointer, Diagnostics& diag);
