@@ -200,7 +200,7 @@ TEST(Formula, the_compiler_derives_the_estimate_and_guards_the_derivative_in_the
 
 TEST(Formula, a_hybrid_runs_its_schedule_and_compiles) {
     Diagnostics diag;
-    const json hybrid = graph_file("graphs/formulas/bulb_box_hybrid.json");
+    const json hybrid = graph_file("graphs/gallery/bulb_box_hybrid.json");
     auto result = fg::test::compile_text(hybrid.dump(), diag);
     ASSERT_TRUE(result) << diag.format();
     auto ev = CpuEvaluator::create(result->ir, diag);

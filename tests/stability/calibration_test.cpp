@@ -169,10 +169,10 @@ INSTANTIATE_TEST_SUITE_P(Gallery, CalibratedGalleryGraph, ::testing::ValuesIn(so
 
 INSTANTIATE_TEST_SUITE_P(Cases, CalibratedHardCase, ::testing::ValuesIn(hard_case_names()),
                          [](const auto& info) { return test_name(info.param); });
-// Formula graphs meet the gallery's standard; all but the power-8 bulb are also free of overshoots
+// Formula graphs meet the gallery's standard; the hybrids and all but the power-8 bulb are also free of overshoots
 // (its bias, like the gallery bulb's, is the one with the fewest within the growth budget).
 INSTANTIATE_TEST_SUITE_P(Formulas, CalibratedGalleryGraph, ::testing::ValuesIn(formula_case_names()),
                          [](const auto& info) { return test_name(info.param); });
-INSTANTIATE_TEST_SUITE_P(Formulas, CalibratedHardCase, ::testing::Values("formulas/bulb_box_hybrid", "formulas/mandelbox",
+INSTANTIATE_TEST_SUITE_P(Formulas, CalibratedHardCase, ::testing::Values("gallery/bulb_box_hybrid", "gallery/box_menger_hybrid", "formulas/mandelbox",
                                                                          "formulas/menger_twisted", "formulas/kleinian"),
                          [](const auto& info) { return test_name(info.param); });

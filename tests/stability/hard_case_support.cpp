@@ -20,6 +20,9 @@ std::string test_name(std::string name) {
 std::vector<std::string> formula_case_names() {
     std::vector<std::string> names;
     for (const auto& n : source_graph_names("graphs/formulas")) names.push_back("formulas/" + n);
+    for (const auto& n : source_graph_names("graphs/gallery"))
+        if (read_source_file("graphs/gallery/" + n + ".json").find("\"fractal.formula\"") != std::string::npos)
+            names.push_back("gallery/" + n);
     return names;
 }
 

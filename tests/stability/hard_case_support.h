@@ -15,8 +15,8 @@ constexpr std::uint32_t kHardCaseSize = 64;
 
 // File stems of graphs/hard/*.json, sorted.
 std::vector<std::string> hard_case_names();
-// The formula graphs of graphs/formulas/ as cases: "formulas/NAME". The stability checks hold for
-// a formula the compiler derived as for a hand-written fractal.
+// The formula graphs of graphs/formulas/ and the gallery's as cases: "formulas/NAME", "gallery/NAME".
+// The stability checks hold for a formula the compiler derived as for a hand-written fractal.
 std::vector<std::string> formula_case_names();
 // A case's graph: graphs/hard/NAME.json, or graphs/PATH.json for a name with a folder.
 std::string hard_case_text(const std::string& name);
