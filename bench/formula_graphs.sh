@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What a formula graph costs against the hand-written fractal node it redraws: four gallery scenes
+# What a formula graph costs against the hand-written fractal node it redraws: five gallery scenes
 # (graphs/gallery/) and their formula graphs (graphs/formulas/), each
 # rendered by fgplay at SIZE per eye, in turns (node, formula, node, formula, ...) so that load on a
 # shared machine hits both alike. Each run renders FRAMES frames and keeps the median GPU frame
@@ -15,7 +15,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export FG_PASS_CACHE=off FG_PIPELINE_CACHE=off
-names="mandelbox mandelbulb menger_twisted kleinian"
+names="mandelbox mandelbulb menger_twisted kleinian julia"
 
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 

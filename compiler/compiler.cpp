@@ -89,7 +89,7 @@ static void check_double_lowering(const IrGraph& ir, Diagnostics& diag) {
     for (const auto& n : ir.nodes) {
         std::string text = n.custom_def ? n.custom_code : n.def->glsl;
         if (n.formula)
-            for (const NodeDefinition* stage : n.formula->stage_definitions()) text += stage->glsl;
+            for (const auto& [stage, generic] : n.formula->stage_definitions()) text += stage->glsl;
         for (const auto& f : functions_without_double(text))
             diag.error(fmt::format("node '{}' ({}) cannot be evaluated in double precision (scene.precision): it calls "
                                    "{}(), which has no double form; use precision \"float\" or another node",

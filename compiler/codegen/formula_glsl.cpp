@@ -30,7 +30,7 @@ std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, 
         std::string decl, args;
         for (std::size_t a = 0; a < s.args.size(); ++a) args += (a ? ", " : "") + value(prog, s, s.args[a]);
         for (std::size_t o = 0; o < s.def->outputs.size(); ++o) {
-            std::string type(type_name(*s.def->outputs[o].type.concrete));
+            std::string type(type_name(s.def->outputs[o].type.concrete ? *s.def->outputs[o].type.concrete : prog.orbit));
             decl += fmt::format("{}{} fz_s{}_{};", decl.empty() ? "" : " ", type, k, o);
             args += fmt::format(", fz_s{}_{}", k, o);
         }
@@ -62,8 +62,13 @@ std::string formula_param_input(const std::string& param) { return "u_" + param;
 
 std::string formula_glsl(const FormulaProgram& prog) {
     std::string out;
-    out += "vec3 fz_z = p;\n";
-    out += prog.julia ? "vec3 fz_c = c;\n" : "vec3 fz_c = p;\n";
+    if (prog.orbit == ValueType::Vec4) {  // a quaternion orbit starts at (p, w): the slice at w
+        out += "vec4 fz_z = vec4(p, w);\n";
+        out += prog.julia ? "vec4 fz_c = c;\n" : "vec4 fz_c = fz_z;\n";
+    } else {
+        out += "vec3 fz_z = p;\n";
+        out += prog.julia ? "vec3 fz_c = c.xyz;\n" : "vec3 fz_c = p;\n";
+    }
     out += "float fz_dr = 1.0;\n";
     out += "float fz_r2 = dot(fz_z, fz_z);\n";
     out += "float fz_bail2 = bailout * bailout;\n";
@@ -89,9 +94,11 @@ std::string formula_glsl(const FormulaProgram& prog) {
     if (prog.repeat) out += "} while (fz_i < iterations && fz_r2 <= fz_bail2);\n";
     out += "float fz_r = sqrt(fz_r2);\n";
     switch (prog.estimate) {
-        case FormulaProgram::Estimate::Linear: out += "distance = fz_r / fz_dr;\n"; break;
-        // log(r) * r tends to 0 at r = 0: the max keeps log finite there.
-        case FormulaProgram::Estimate::Log: out += "distance = 0.5 * log(max(fz_r, FG_TINY)) * fz_r / fz_dr;\n"; break;
+        // dr is 0 where a power map's gain is (a quaternion square at z = 0): the maxes keep both finite.
+        case FormulaProgram::Estimate::Linear: out += "distance = fz_r / max(fz_dr, FG_TINY);\n"; break;
+        case FormulaProgram::Estimate::Log:
+            out += "distance = 0.5 * log(max(fz_r, FG_TINY)) * fz_r / max(fz_dr, FG_TINY);\n";
+            break;
         case FormulaProgram::Estimate::Box:
             out += "vec3 fz_q = abs(fz_z) - vec3(1.0);\n";
             out += "distance = (length(max(fz_q, vec3(0.0))) + min(max(fz_q.x, max(fz_q.y, fz_q.z)), 0.0)) / max(fz_dr, FG_TINY);\n";
@@ -106,9 +113,13 @@ std::string formula_glsl(const FormulaProgram& prog) {
     }
     if (prog.bound_radius > 0.0) {
         // Far away the estimate may grow faster than the true distance; the set lies in the bound's
-        // ball, so beyond twice its radius the distance to the ball bounds it.
-        out += fmt::format("float fz_reach = length(p) - {};\n", Constant::scalar(ValueType::Float, prog.bound_radius).glsl());
-        out += fmt::format("if (fz_reach > {}) distance = min(distance, fz_reach);\n", Constant::scalar(ValueType::Float, prog.bound_radius).glsl());
+        // ball, so beyond twice its radius the distance to the ball bounds it. A Julia set's ball
+        // grows to |c| where that is larger (z^2 + c: every orbit beyond max(2, |c|) escapes).
+        std::string radius = Constant::scalar(ValueType::Float, prog.bound_radius).glsl();
+        if (prog.julia) radius = fmt::format("max({}, length({}))", radius, prog.orbit == ValueType::Vec4 ? "c" : "c.xyz");
+        out += fmt::format("float fz_ball = {};\n", radius);
+        out += "float fz_reach = length(p) - fz_ball;\n";
+        out += "if (fz_reach > fz_ball) distance = min(distance, fz_reach);\n";
     }
     return out;
 }

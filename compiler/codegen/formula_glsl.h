@@ -8,7 +8,7 @@
 
 namespace fg {
 
-// Statements for a function whose parameters are named as the formula node's inputs (p, c,
+// Statements for a function whose parameters are named as the formula node's inputs (p, c, w,
 // iterations, bailout, bias, then u_<param> for each graph parameter) and outputs (distance, trap).
 std::string formula_glsl(const FormulaProgram& program);
 

@@ -135,20 +135,22 @@ void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const st
         if (skip[i]) {
             done.insert(key(ir_.nodes[i]));
             if (ir_.nodes[i].formula)
-                for (const NodeDefinition* stage : ir_.nodes[i].formula->stage_definitions())
-                    done.insert({stage->function_name(), -1});
+                for (const auto& [stage, generic] : ir_.nodes[i].formula->stage_definitions())
+                    done.insert({stage->function_name(), generic ? static_cast<int>(*generic) : -1});
         }
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
         if (!want[i]) continue;
         const IrNode& n = ir_.nodes[i];
         if (n.formula)  // the stages its body calls, before its own function
-            for (const NodeDefinition* stage : n.formula->stage_definitions()) {
-                if (!done.insert({stage->function_name(), -1}).second) continue;
+            for (const auto& [stage, generic] : n.formula->stage_definitions()) {
+                if (!done.insert({stage->function_name(), generic ? static_cast<int>(*generic) : -1}).second) continue;
                 SourceOrigin body;
                 body.kind = SourceOrigin::Kind::Library;
                 body.file = "nodes/" + stage->glsl_path;
                 body.line = 1;
+                if (generic) w.line(fmt::format("#define T {}", type_of(*generic)), generated());
                 w.write(lowered(stage->glsl), body);
+                if (generic) w.line("#undef T", generated());
                 w.blank();
             }
         if (n.custom_def) {

@@ -35,7 +35,7 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
                            s.pointer, node_id);
                 return nullptr;
             }
-            CpuNodeFunction fn = find_cpu_node(s.def->type, std::nullopt);
+            CpuNodeFunction fn = find_cpu_node(s.def->type, s.generic);
             if (!fn) {
                 diag.error(fmt::format("stage \"{}\" ({}) has no CPU twin", s.id, s.def->type), s.pointer, node_id);
                 return nullptr;
@@ -48,7 +48,7 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
 }
 
 // One pass through a group: as formula_glsl()'s iteration.
-void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3& z, double& dr, double bias) const {
+void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias) const {
     const FormulaProgram& prog = *program_;
     const auto& g = prog.groups[static_cast<std::size_t>(group)];
     const auto& fns = functions_[static_cast<std::size_t>(group)];
@@ -77,17 +77,20 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3
             default: d[k] = d_in; break;
         }
     }
-    z = outs[g.z_out][0].v3();
+    z = outs[g.z_out][0].v4();
     dr = glsl::fg_conservative_dr(dr, bias, d[g.z_out]);
 }
 
 void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     const FormulaProgram& prog = *program_;
+    // A 3D orbit is carried with w = 0 (3D stages write 0 there), a quaternion one from (p, w).
     const glm::dvec3 p = in[kFormulaP].v3();
-    const glm::dvec3 c = prog.julia ? in[kFormulaC].v3() : p;
+    const bool quaternion = prog.orbit == ValueType::Vec4;
+    const glm::dvec4 start(p, quaternion ? in[kFormulaW].f() : 0.0);
+    const glm::dvec4 c = !prog.julia ? start : quaternion ? in[kFormulaC].v4() : glm::dvec4(in[kFormulaC].v3(), 0.0);
     const int iterations = in[kFormulaIterations].i();
     const double bail2 = in[kFormulaBailout].f() * in[kFormulaBailout].f(), bias = in[kFormulaBias].f();
-    glm::dvec3 z = p;
+    glm::dvec4 z = start;
     double dr = 1.0, r2 = glm::dot(z, z);
     glm::dvec4 trap(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2);
     int i = 0;
@@ -101,26 +104,29 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
             }
     } while (prog.repeat && i < iterations && r2 <= bail2);
     const double r = std::sqrt(r2);
-    double distance = r / dr;
+    double distance = r / std::max(dr, kTiny);
     switch (prog.estimate) {
         case FormulaProgram::Estimate::Linear: break;
-        case FormulaProgram::Estimate::Log: distance = 0.5 * std::log(std::max(r, kTiny)) * r / dr; break;
+        case FormulaProgram::Estimate::Log: distance = 0.5 * std::log(std::max(r, kTiny)) * r / std::max(dr, kTiny); break;
         case FormulaProgram::Estimate::Box: {
-            glm::dvec3 q = glm::abs(z) - glm::dvec3(1.0);
+            glm::dvec3 q = glm::abs(glm::dvec3(z)) - glm::dvec3(1.0);
             distance = (glm::length(glm::max(q, glm::dvec3(0.0))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0)) /
                        std::max(dr, kTiny);
             break;
         }
         case FormulaProgram::Estimate::Sheet: {
             double rxy = std::sqrt(z.x * z.x + z.y * z.y);
-            double seed = std::max(rxy - prog.sheet_radius, std::abs(rxy * z.z) / std::max(glm::length(z), kTiny));
+            double seed = std::max(rxy - prog.sheet_radius, std::abs(rxy * z.z) / std::max(glm::length(glm::dvec3(z)), kTiny));
             distance = seed / std::max(dr, kTiny);
             break;
         }
     }
     if (prog.bound_radius > 0.0) {
-        double reach = glm::length(p) - prog.bound_radius;
-        if (reach > prog.bound_radius) distance = std::min(distance, reach);
+        const double ball = prog.julia ? std::max(prog.bound_radius, quaternion ? glm::length(in[kFormulaC].v4())
+                                                                                 : glm::length(in[kFormulaC].v3()))
+                                       : prog.bound_radius;
+        double reach = glm::length(p) - ball;
+        if (reach > ball) distance = std::min(distance, reach);
     }
     out[0] = CpuValue::of(distance);
     out[1] = CpuValue::of(trap);

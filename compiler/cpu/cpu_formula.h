@@ -26,7 +26,7 @@ private:
     std::shared_ptr<const FormulaProgram> program_;
     std::vector<std::vector<CpuNodeFunction>> functions_;   // per group, per stage
 
-    void iterate(int group, const CpuValue* in, glm::dvec3 c, glm::dvec3& z, double& dr, double bias) const;
+    void iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias) const;
 };
 
 }  // namespace fg

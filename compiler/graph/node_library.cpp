@@ -43,14 +43,18 @@ void read_stage_derivative(const json& d, NodeDefinition& def, JsonFieldReader& 
             if (!in || in->type.concrete != ValueType::Float)
                 r.error(fmt::format("\"weight\" names a float input, and \"{}\" is none", sd.weight), "/derivative/weight");
         }
-        if (!def.find_input("c") || def.find_input("c")->type.concrete != ValueType::Vec3)
-            r.error("an add_c stage has a vec3 input \"c\"", "/inputs");
+        if (!def.find_input("c") || def.find_input("c")->type.text() != def.inputs[0].type.text())
+            r.error("an add_c stage has an input \"c\" of z's type", "/inputs");
     }
-    auto is_z = [](const std::vector<PortDefinition>& ports) {
-        return !ports.empty() && ports[0].name == "z" && ports[0].type.concrete == ValueType::Vec3;
+    // z: vec3, vec4 (quaternion stages), or T for stages that work on either.
+    auto z_type = [](const std::vector<PortDefinition>& ports) -> std::string {
+        return !ports.empty() && ports[0].name == "z" ? ports[0].type.text() : "";
     };
-    if (!is_z(def.inputs) || !is_z(def.outputs)) r.error("a stage's first input and first output are \"z\" (vec3)", "/inputs");
-    if (!def.generic.empty()) r.error("a stage is not generic", "/generic");
+    const std::string zin = z_type(def.inputs), zout = z_type(def.outputs);
+    if (zin != zout || (zin != "vec3" && zin != "vec4" && zin != "T"))
+        r.error("a stage's first input and first output are \"z\", both vec3, vec4 or T", "/inputs");
+    for (ValueType t : def.generic)
+        if (t != ValueType::Vec3 && t != ValueType::Vec4) r.error("a generic stage works on vec3 and vec4 orbits", "/generic");
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "formula_program.h"
 
 #include <fmt/format.h>
+
+#include "graph/literal.h"
+#include <algorithm>
 #include <functional>
 #include <set>
 
@@ -23,6 +26,7 @@ public:
         prog->repeat = body.repeat;
         prog->julia = body.julia;
         prog->bound_radius = body.bound_radius;
+        prog->orbit = orbit_type(body);
         bool has_power = false;
         for (const auto& group : body.groups) {
             prog->groups.push_back(resolve_group(group));
@@ -34,6 +38,9 @@ public:
                          : body.estimate == "sheet"                                    ? Estimate::Sheet
                                                                                        : Estimate::Linear;
         prog->sheet_radius = body.sheet_radius;
+        if (prog->orbit == ValueType::Vec4 && (prog->estimate == Estimate::Box || prog->estimate == Estimate::Sheet))
+            diag_.error("the box and sheet estimates measure a 3D point; a quaternion formula uses \"linear\" or \"log\"",
+                        body.pointer + "/estimate", node_id_);
         for (const auto& seg : body.schedule)
             for (std::size_t g = 0; g < body.groups.size(); ++g)
                 if (body.groups[g].name == seg.group) prog->segments.push_back({static_cast<int>(g), seg.count});
@@ -49,6 +56,24 @@ private:
     const std::string& node_id_;
     Diagnostics& diag_;
     FormulaProgram* prog_ = nullptr;
+
+    // vec4 when a stage works on quaternions, else vec3; stages of both kinds cannot share an orbit.
+    ValueType orbit_type(const FormulaBody& body) {
+        const GraphNode* first3 = nullptr;
+        const GraphNode* first4 = nullptr;
+        for (const auto& g : body.groups)
+            for (const auto& n : g.nodes)
+                if (const NodeDefinition* d = lib_.find(n.type); d && !d->inputs.empty() && d->inputs[0].type.concrete) {
+                    if (*d->inputs[0].type.concrete == ValueType::Vec4) first4 = first4 ? first4 : &n;
+                    else first3 = first3 ? first3 : &n;
+                }
+        if (first3 && first4)
+            diag_.error(fmt::format("stage \"{}\" ({}) works on 3D points and \"{}\" ({}) on quaternions: one formula "
+                                    "carries one kind of orbit",
+                                    first3->id, first3->type, first4->id, first4->type),
+                        first4->pointer + "/type", node_id_);
+        return first4 ? ValueType::Vec4 : ValueType::Vec3;
+    }
 
     int param_input(const std::string& name) {
         for (std::size_t i = 0; i < prog_->params.size(); ++i)
@@ -85,6 +110,7 @@ private:
         s.pointer = n.pointer;
         s.def = lib_.find(n.type);
         if (!s.def) return s;  // reported by the loader
+        if (!s.def->generic.empty()) s.generic = prog_->orbit;
         const auto& d = s.def->derivative;
         for (std::size_t i = 0; i < s.def->inputs.size(); ++i) {
             const auto& port = s.def->inputs[i];
@@ -111,6 +137,9 @@ private:
                         a.splat = component_count(*port.type.concrete);
             } else if (b->second.kind == Binding::Kind::Literal) {
                 a.constant = b->second.literal;
+                // A generic port takes the orbit's type; the loader could not know it.
+                if (!port.type.concrete)
+                    if (auto c = coerce_literal(a.constant, prog_->orbit, {b->second.pointer, node_id_}, diag_)) a.constant = *c;
             }
             s.args.push_back(a);
             if (d.rule == Rule::AddC && port.name == d.weight) s.weight_arg = static_cast<int>(i);
@@ -140,12 +169,12 @@ std::string FormulaProgram::describe() const {
     return text + fmt::format("; dr guarded by the bias each iteration; distance {}", estimates[static_cast<int>(estimate)]);
 }
 
-std::vector<const NodeDefinition*> FormulaProgram::stage_definitions() const {
-    std::vector<const NodeDefinition*> defs;
-    std::set<const NodeDefinition*> seen;
+std::vector<std::pair<const NodeDefinition*, std::optional<ValueType>>> FormulaProgram::stage_definitions() const {
+    std::vector<std::pair<const NodeDefinition*, std::optional<ValueType>>> defs;
     for (const auto& g : groups)
         for (const auto& s : g.stages)
-            if (seen.insert(s.def).second) defs.push_back(s.def);
+            if (std::find(defs.begin(), defs.end(), std::make_pair(s.def, s.generic)) == defs.end())
+                defs.emplace_back(s.def, s.generic);
     return defs;
 }
 

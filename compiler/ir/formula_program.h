@@ -5,6 +5,7 @@
 // both run exactly this.
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@ namespace fg {
 
 // The formula node's own inputs, in nodes/fractal/formula.json's order; after them come one input
 // per graph parameter the body uses.
-enum FormulaPort { kFormulaP = 0, kFormulaC, kFormulaIterations, kFormulaBailout, kFormulaBias, kFormulaFixedPorts };
+enum FormulaPort { kFormulaP = 0, kFormulaC, kFormulaW, kFormulaIterations, kFormulaBailout, kFormulaBias, kFormulaFixedPorts };
 
 struct FormulaArg {
     enum class Kind {
@@ -35,6 +36,7 @@ struct FormulaStage {
     std::string id;
     std::string pointer;
     const NodeDefinition* def = nullptr;
+    std::optional<ValueType> generic;   // a generic stage's T: the orbit's type
     std::vector<FormulaArg> args;   // one per def->inputs
     int factor_output = -1;         // Conformal and Power stages: the output holding the factor
     int weight_arg = -1;            // AddC stages: the argument holding the weight
@@ -52,6 +54,7 @@ struct FormulaSegmentProgram {
 };
 
 struct FormulaProgram {
+    ValueType orbit = ValueType::Vec3;  // z: vec3, or vec4 for quaternion formulas
     std::vector<FormulaGroupProgram> groups;
     std::vector<FormulaSegmentProgram> segments;
     bool repeat = false;
@@ -69,8 +72,8 @@ struct FormulaProgram {
 
     // The derivative the compiler composed, in words, for fgc info and the manifest.
     std::string describe() const;
-    // Every stage definition the body calls, once each.
-    std::vector<const NodeDefinition*> stage_definitions() const;
+    // Every stage the body calls, once per definition and generic instance.
+    std::vector<std::pair<const NodeDefinition*, std::optional<ValueType>>> stage_definitions() const;
 };
 
 // Resolves a loaded body against the library; problems are reported at the body's pointers.

@@ -102,7 +102,7 @@ private:
                     if (s.args[a].kind != FormulaArg::Kind::Input) continue;
                     const auto& name = prog.params[static_cast<std::size_t>(s.args[a].input - kFormulaFixedPorts)];
                     const ParamDecl* decl = g_.find_param(name);
-                    ValueType want = *s.def->inputs[a].type.concrete;
+                    ValueType want = s.def->inputs[a].type.concrete ? *s.def->inputs[a].type.concrete : prog.orbit;
                     if (decl && decl->type == ValueType::Float && is_vector(want)) continue;  // broadcast, as literals are
                     if (decl && !assignable(decl->type, want)) {
                         diag_.error(fmt::format("type mismatch: input \"{}\" of {} is {}, but parameter \"${}\" is {}",

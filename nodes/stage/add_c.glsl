@@ -1,4 +1,4 @@
-void fg_stage_add_c(vec3 z, vec3 c, float weight, OUT(vec3) added)
+void fg_stage_add_c(T z, T c, float weight, OUT(T) added)
 {
     added = z + c * weight;
 }

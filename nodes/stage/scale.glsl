@@ -1,4 +1,4 @@
-void fg_stage_scale(vec3 z, float scale, OUT(vec3) scaled, OUT(float) gain)
+void fg_stage_scale(T z, float scale, OUT(T) scaled, OUT(float) gain)
 {
     scaled = z * scale;
     gain = abs(scale);

@@ -26,13 +26,18 @@ std::vector<const NodeDefinition*> stages() {
     return out;
 }
 
-// A stage run on z with its example's literals (defaults elsewhere); c is a fixed point.
+// A stage run on z with its example's literals (defaults elsewhere); c is a fixed point. Generic
+// stages run as their vec3 instance; quaternion stages on 4D points.
 struct StageCall {
     const NodeDefinition* def;
     std::vector<CpuValue> in;
     CpuNodeFunction fn;
+    int n;   // the orbit's dimension
 
-    explicit StageCall(const NodeDefinition* d) : def(d), fn(find_cpu_node(d->type, std::nullopt)) {
+    explicit StageCall(const NodeDefinition* d)
+        : def(d),
+          fn(find_cpu_node(d->type, d->generic.empty() ? std::nullopt : std::optional<ValueType>(ValueType::Vec3))),
+          n(d->inputs[0].type.concrete == ValueType::Vec4 ? 4 : 3) {
         const json example = d->example.value("inputs", json::object());
         for (const auto& port : d->inputs) {
             Constant v = port.default_value.value_or(Constant{});
@@ -41,13 +46,13 @@ struct StageCall {
             if (example.contains(port.name) && example[port.name].is_array()) {
                 std::array<double, 4> xs{};
                 for (std::size_t i = 0; i < example[port.name].size(); ++i) xs[i] = example[port.name][i].get<double>();
-                v = Constant::vector(*port.type.concrete, xs);
+                v = Constant::vector(port.type.concrete.value_or(ValueType::Vec3), xs);
             }
             in.push_back(CpuValue::of(v));
         }
-        if (auto* c = d->find_input("c")) in[static_cast<std::size_t>(c - d->inputs.data())] = CpuValue::of(glm::dvec3(0.3, -0.2, 0.1));
+        if (auto* c = d->find_input("c")) in[static_cast<std::size_t>(c - d->inputs.data())] = CpuValue::of(glm::dvec4(0.3, -0.2, 0.1, 0.0));
     }
-    std::vector<CpuValue> operator()(const glm::dvec3& z) {
+    std::vector<CpuValue> operator()(const glm::dvec4& z) {
         in[0] = CpuValue::of(z);
         std::vector<CpuValue> out(def->outputs.size());
         fn(in.data(), out.data());
@@ -60,53 +65,59 @@ struct StageCall {
     }
 };
 
-// The Jacobian of the stage at z by central differences with step h.
-glm::dmat3 jacobian(StageCall& call, const glm::dvec3& z, double h) {
-    glm::dmat3 j(0.0);
-    for (int a = 0; a < 3; ++a) {
-        glm::dvec3 e(0.0);
+// The Jacobian of the stage at z by central differences with step h (n x n; the rest zero).
+glm::dmat4 jacobian(StageCall& call, const glm::dvec4& z, double h) {
+    glm::dmat4 j(0.0);
+    for (int a = 0; a < call.n; ++a) {
+        glm::dvec4 e(0.0);
         e[a] = h;
-        j[a] = (call(z + e)[0].v3() - call(z - e)[0].v3()) / (2.0 * h);
+        j[a] = (call(z + e)[0].v4() - call(z - e)[0].v4()) / (2.0 * h);
     }
     return j;
 }
 
-double max_abs(const glm::dmat3& m) {
+double max_abs(const glm::dmat4& m, int n) {
     double x = 0.0;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) x = std::max(x, std::abs(m[c][r]));
+    for (int c = 0; c < n; ++c)
+        for (int r = 0; r < n; ++r) x = std::max(x, std::abs(m[c][r]));
     return x;
+}
+
+glm::dmat4 identity(int n) {
+    glm::dmat4 m(0.0);
+    for (int i = 0; i < n; ++i) m[i][i] = 1.0;
+    return m;
 }
 
 TEST(Formula, every_stage_declares_a_derivative_a_finite_difference_confirms) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.6, 1.6);
-    ASSERT_GE(stages().size(), 8u);
+    ASSERT_GE(stages().size(), 12u);
     for (const auto* def : stages()) {
         SCOPED_TRACE(def->type);
         StageCall call(def);
         ASSERT_NE(call.fn, nullptr);
+        const int n = call.n;
         int checked = 0;
         for (int i = 0; i < 400 && checked < 100; ++i) {
-            glm::dvec3 z(u(rng), u(rng), u(rng));
+            glm::dvec4 z(u(rng), u(rng), u(rng), n == 4 ? u(rng) : 0.0);
             // A fold's pieces meet along kinks: where two step sizes disagree the point is on one.
-            glm::dmat3 j = jacobian(call, z, 1e-5), j2 = jacobian(call, z, 5e-6);
-            if (max_abs(j - j2) > 1e-7 * std::max(1.0, max_abs(j))) continue;
+            glm::dmat4 j = jacobian(call, z, 1e-5), j2 = jacobian(call, z, 5e-6);
+            if (max_abs(j - j2, n) > 1e-7 * std::max(1.0, max_abs(j, n))) continue;
             ++checked;
             auto out = call(z);
             switch (def->derivative.rule) {
                 case Rule::Isometry:
                 case Rule::AddC: {
                     // Lengths kept: J^T J = I (for add_c, the derivative in z; c adds |weight| in p).
-                    glm::dmat3 g = glm::transpose(j) * j - glm::dmat3(1.0);
-                    EXPECT_LT(max_abs(g), 1e-6) << z.x << " " << z.y << " " << z.z;
+                    EXPECT_LT(max_abs(glm::transpose(j) * j - identity(n), n), 1e-6) << z.x << " " << z.y << " " << z.z;
                     break;
                 }
                 case Rule::Conformal: {
                     // Locally a similarity with the declared factor k: J^T J = k^2 I.
                     double k = out[static_cast<std::size_t>(call.factor_output())].f();
-                    glm::dmat3 g = glm::transpose(j) * j / (k * k) - glm::dmat3(1.0);
-                    EXPECT_LT(max_abs(g), 1e-6) << z.x << " " << z.y << " " << z.z << " k " << k;
+                    EXPECT_LT(max_abs(glm::transpose(j) * j / (k * k) - identity(n), n), 1e-6)
+                        << z.x << " " << z.y << " " << z.z << " k " << k;
                     break;
                 }
                 case Rule::Power: {
@@ -165,6 +176,10 @@ TEST(Formula, the_gallery_twisted_sponge_as_a_formula_graph_is_the_menger_node) 
     EXPECT_LT(largest_relative_difference("graphs/gallery/menger_twisted.json", "graphs/formulas/menger_twisted.json", 1.5,
                                           100000),
               1e-12);
+}
+
+TEST(Formula, the_gallery_julia_as_a_formula_graph_is_the_julia_node) {
+    EXPECT_LT(largest_relative_difference("graphs/gallery/julia.json", "graphs/formulas/julia.json", 1.6, 100000), 1e-12);
 }
 
 TEST(Formula, the_gallery_kleinian_as_a_formula_graph_is_the_kleinian_node) {
@@ -269,6 +284,13 @@ TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {
     diag = fg::test::check_front(g);
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/0/inputs/scale", "f", "type mismatch"));
     EXPECT_EQ(diag.error_count(), 1u) << diag.format();
+
+    // 3D and quaternion stages in one orbit; a cube seed for a 4D orbit.
+    g = formula_graph(json::parse(R"({"estimate": "box", "groups": [{"name": "a", "nodes": [
+        {"id": "s", "type": "stage.abs_fold"}, {"id": "q", "type": "stage.quaternion_square"}]}]})"));
+    diag = fg::test::check_front(g);
+    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/1/type", "f", "one kind of orbit"));
+    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/estimate", "f", "a quaternion formula uses"));
 
     // A formula node without its body.
     g = fg::test::minimal_graph();
