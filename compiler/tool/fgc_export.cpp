@@ -60,6 +60,11 @@ bool parse_shard(const std::string& text, NarrowBandSettings& s, Diagnostics& di
 // Every output path is checked before any work: a format we cannot write or a folder we cannot
 // write into is an error now, not after hours of sampling.
 bool check_outputs(const ExportOptions& o, const std::string& vdb, Diagnostics& diag) {
+    // A level set named otherwise would be a .vdb that no program opens as one.
+    if (std::filesystem::path(vdb).extension() != ".vdb") {
+        diag.error(fmt::format("-o {}: a level set is written as .vdb (meshes go to --mesh)", vdb));
+        return false;
+    }
     bool ok = can_write(vdb, "-o", diag);
     for (const auto& m : o.meshes) {
         if (!mesh_format_of(m)) {

@@ -174,7 +174,13 @@ int render(const RenderOptions& o) {
             }
         }
         if (validation_failed(ctx)) return 1;
-        fmt::print("images in {}/: left.png right.png side_by_side.png{}\n", o.out, o.depth ? " depth_left.png depth_right.png" : "");
+        // The names written: numbered when there is more than one frame.
+        std::string names;
+        for (const char* name : {"left", "right", "side_by_side", "depth_left", "depth_right"})
+            if (o.depth || std::string_view(name).substr(0, 5) != "depth")
+                names += fmt::format(" {}{}.png", name, o.frames > 1 ? "_NNNN" : "");
+        fmt::print("images in {}/:{}{}\n", o.out, names,
+                   o.frames > 1 ? fmt::format(" for NNNN from 0000 to {:04}", o.frames - 1) : "");
         return 0;
     });
 }

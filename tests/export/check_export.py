@@ -226,6 +226,7 @@ def bad_input(args):
         ([sphere, "-o", out, "--mesh", os.path.join(args.work, "no_such_folder/out.stl")], "no_such_folder/out.stl: cannot write there"),
         ([sphere, "-o", out, "--mesh", os.path.join(args.work, "out.fbx")], "--mesh " + os.path.join(args.work, "out.fbx") + ": unknown mesh format"),
         ([sphere, "-o", out, "--shard", "3/3"], "--shard 3/3: expected I/N"),
+        ([sphere, "-o", os.path.join(args.work, "out.txt")], "out.txt: a level set is written as .vdb"),
         ([sphere, "-o", out, "--param", "radius=2"], "--param radius=2"),
         (["--merge", os.path.join(args.work, "missing.vdb"), "-o", out], "missing.vdb"),
     ]

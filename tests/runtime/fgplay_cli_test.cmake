@@ -25,6 +25,15 @@ execute_process(COMMAND ${FGC} compile ${SOURCE}/graphs/gallery/mandelbulb.json 
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fgc compile failed on the gallery Mandelbulb")
 endif()
+# Frames of a still are numbered, and the closing line names the files as written.
+execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 16x16 --frames 2 --out ${WORK}/frames
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/frames/left_0001.png OR EXISTS ${WORK}/frames/left.png)
+  message(FATAL_ERROR "fgplay render --frames 2: exit ${rc}, expected frames/left_0000.png and left_0001.png: ${out}${err}")
+endif()
+if(NOT out MATCHES "left_NNNN.png right_NNNN.png side_by_side_NNNN.png for NNNN from 0000 to 0001")
+  message(FATAL_ERROR "fgplay render --frames 2 names files it did not write: ${out}")
+endif()
 expect_failure("an unknown knob" "no_such_knob" ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --knob no_such_knob=1
                --out ${WORK}/x)
 expect_failure("an unknown output format" "--format is png, png16 or exr, not 'tiff'" ${FGPLAY} render ${WORK}/bulb.fgpack
