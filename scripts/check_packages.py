@@ -106,8 +106,11 @@ def owners(paths):
     return found
 
 
+FUZZ_BUILD = False   # a fuzz build (FG_FUZZ) is all test code: scripts/fuzz.sh, with clang
+
+
 def is_test_only(relative):
-    return relative.startswith(("tests/", "bench/"))
+    return FUZZ_BUILD or relative.startswith(("tests/", "bench/"))
 
 
 def headers_by_user(build):
@@ -157,6 +160,9 @@ def main():
     parser.add_argument("--without", nargs="*", default=[], help="leave these packages out of the lists")
     args = parser.parse_args()
 
+    global FUZZ_BUILD
+    cache = os.path.join(args.build, "CMakeCache.txt")
+    FUZZ_BUILD = os.path.exists(cache) and "FG_FUZZ:BOOL=ON" in open(cache, encoding="utf-8").read()
     packages, provides = read_dpkg_status()
     base = minimal_debian(packages)
     demo_lists = listed_packages(args.lists_from, "demo") - set(args.without)
