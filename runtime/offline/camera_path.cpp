@@ -120,8 +120,10 @@ std::optional<CameraPath> CameraPath::load(const std::string& file, double defau
 }
 
 int CameraPath::frame_count() const {
+    // A last key written with a few decimals (10/3 s as 3.3333333) lands a hair before the frame
+    // it means: a frame within a thousandth of a frame interval of the last key is the last frame.
     double duration = keys_.back().time - keys_.front().time;
-    return static_cast<int>(std::floor(duration * fps_ + 1e-9)) + 1;
+    return static_cast<int>(std::floor(duration * fps_ + 1e-3)) + 1;
 }
 
 CameraSample CameraPath::sample(int frame) const { return at(keys_.front().time + frame / fps_); }

@@ -47,6 +47,18 @@ TEST(CameraPath, passes_through_every_key_at_its_time) {
     EXPECT_LT(glm::length(forward - glm::dvec3(0, 0, -1)), 1e-9);
 }
 
+TEST(CameraPath, a_last_key_written_with_seven_decimals_keeps_its_frame) {
+    Diagnostics diag;
+    auto path = parse(R"({"format": "fractograph-camera-path", "version": 1, "fps": 30, "keyframes": [
+        {"time": 0.0, "position": [0, 0, 3], "target": [0, 0, 0]},
+        {"time": 3.3333333, "position": [3, 0, 0], "target": [0, 0, 0]}]})",
+                      diag);
+    ASSERT_TRUE(path) << diag.format();
+    EXPECT_EQ(path->frame_count(), 101);  // frames 0 to 100: 100 / 30 s is the last key's time
+    CameraSample last = path->sample(100);
+    EXPECT_LT(glm::length(last.head.position - glm::dvec3(3, 0, 0)), 1e-6);
+}
+
 TEST(CameraPath, zooms_by_the_same_factor_each_second_and_eases_where_asked) {
     Diagnostics diag;
     auto path = parse(kThreeKeys, diag);
