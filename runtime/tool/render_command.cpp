@@ -78,6 +78,9 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
                      "GPU time of each pass instead of each pass group, with counting off, after an untimed warm-up frame "
                      "(on a CPU device a timestamp around every pass slows the frame: take frame totals from fgplay "
                      "bench)");
+    render->add_flag("--count", r.count,
+                     "also count SDF evaluations, fractal iterations and busy SIMD lanes per pass and print them "
+                     "(with --path: evaluations per sample); counting costs 5-10 % of the GPU time");
     render->add_flag("--depth", r.depth, "also write 16-bit depth PNGs");
     render->add_flag("--validation", r.validation, "enable the Vulkan validation layer; errors fail the run");
     render->add_option("--device", r.device, "Vulkan device: index or name substring");

@@ -84,7 +84,10 @@ function Studio() {
   const view = useRef({ camera, params, stereo });
   view.current = { camera, params, stereo };
   const frameState = useRef({ inFlight: false, again: false });
+  // Until a graph has compiled there is no frame to ask for (the server would answer 409).
+  const compiledOnce = useRef(false);
   const requestFrame = useCallback(() => {
+    if (!compiledOnce.current) return;
     const s = frameState.current;
     if (s.inFlight) {
       s.again = true;
@@ -184,6 +187,7 @@ function Studio() {
         setCompile(state);
         setCompiling(false);
         if (state.ok) {
+          compiledOnce.current = true;
           requestFrame();
           refreshPreviews(graph, revision);
         }

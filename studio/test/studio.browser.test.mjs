@@ -222,6 +222,9 @@ test("the studio edits a graph with a live preview", async (t) => {
     await page.waitForSelector('[data-testid="node-bulb"]', { timeout: 60000 });
     frame = await waitForPreview();
     await idle();
+    // The page asks for a frame only once a graph has compiled: no request was refused on the way.
+    const refused = pageLog.filter((line) => / (4\d\d|5\d\d)$/.test(line));
+    assert.deepEqual(refused, [], "requests refused while the page opened");
     await page.screenshot({ path: path.join(shots, "overview.png") });
   });
 

@@ -34,6 +34,10 @@ endif()
 if(NOT out MATCHES "left_NNNN.png right_NNNN.png side_by_side_NNNN.png for NNNN from 0000 to 0001")
   message(FATAL_ERROR "fgplay render --frames 2 names files it did not write: ${out}")
 endif()
+# Counting costs GPU time: only --count does it.
+if(out MATCHES "SDF evaluations")
+  message(FATAL_ERROR "fgplay render counted evaluations without --count: ${out}")
+endif()
 expect_failure("an unknown knob" "no_such_knob" ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --knob no_such_knob=1
                --out ${WORK}/x)
 expect_failure("an unknown output format" "--format is png, png16 or exr, not 'tiff'" ${FGPLAY} render ${WORK}/bulb.fgpack
@@ -70,7 +74,7 @@ if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/exr/frame_000000.exr OR NOT out MATCHES 
 endif()
 
 execute_process(COMMAND ${FGPLAY} render ${WORK}/bulb.fgpack --size 64x64 --out ${WORK}/frame --describe --lens-mask
-                        --foveation 0.5 --validation
+                        --foveation 0.5 --validation --count
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fgplay render failed: ${out}${err}")
