@@ -541,8 +541,12 @@ int play_xr(const XrPlayOptions& o) {
         co.pipeline_cache_file = vk::user_pipeline_cache_file();
         std::size_t vk_errors = 0;
         int rc = 0;
+        // The validation log outlives the context: errors at teardown (objects left when the device
+        // is destroyed, under the messenger) count too.
+        std::shared_ptr<const vk::ValidationLog> validation;
         {
             vk::Context ctx(co);
+            if (ctx.validation_enabled()) validation = ctx.validation_log();
             fmt::print("Vulkan device: {}\n", ctx.device_name());
             {
                 XrPlayer player(instance, ctx, *pack, options);
@@ -582,9 +586,9 @@ int play_xr(const XrPlayOptions& o) {
                     fmt::print("lens mask: the runtime has no XR_KHR_visibility_mask\n");
             }
             ctx.wait_idle();
-            vk_errors = ctx.validation_enabled() ? ctx.validation_errors() : 0;
-            if (ctx.validation_enabled()) fmt::print("Vulkan validation: {} errors\n", vk_errors);
         }
+        vk_errors = validation ? validation->errors() : 0;
+        if (validation) fmt::print("Vulkan validation: {} errors\n", vk_errors);
         const auto& xr_log = instance.messages();
         fmt::print("OpenXR messages: {} errors, {} warnings\n", xr_log.errors, xr_log.warnings);
         if (rc == 0 && (vk_errors > 0 || xr_log.errors > 0)) rc = 1;
