@@ -120,6 +120,17 @@ function Studio() {
   useEffect(requestFrame, [camera, params, stereo, requestFrame]);
 
   // --- opening a graph ---------------------------------------------------------------------------
+  // Edits since the graph was opened or saved: switching graphs or closing the tab asks first.
+  const unsaved = useRef(false);
+  useEffect(() => {
+    const warn = (e: BeforeUnloadEvent) => {
+      if (!unsaved.current) return;
+      e.preventDefault();
+      e.returnValue = "";
+    };
+    window.addEventListener("beforeunload", warn);
+    return () => window.removeEventListener("beforeunload", warn);
+  }, []);
   const open = useCallback(
     async (p: string) => {
       try {
@@ -127,6 +138,7 @@ function Studio() {
         const placed = editorPositions(graph);
         setPath(p);
         setDoc(graph);
+        unsaved.current = false;
         setPositions(placed ?? autoLayout(graph, catalogMap));
         setLayoutDirty(false);
         setParams(paramDefaults(graph));
@@ -202,6 +214,7 @@ function Studio() {
   // --- edits, with undo ----------------------------------------------------------------------------
   const commit = useCallback((next: GraphDoc, nextPositions?: Positions) => {
     history.current.push(snapshot.current);
+    unsaved.current = true;
     setDoc(next);
     if (nextPositions) {
       setPositions(nextPositions);
@@ -210,6 +223,7 @@ function Studio() {
   }, []);
   const restore = (s: Snapshot | null) => {
     if (!s) return;
+    unsaved.current = true;
     setDoc(s.doc);
     setPositions(s.positions);
   };
@@ -367,6 +381,7 @@ function Studio() {
   const save = async (target: string) => {
     try {
       const r = await api.save(target, savedDoc(), path);
+      unsaved.current = false;
       say(`saved ${r.path} (${r.bytes} bytes)`);
       if (target !== path) {
         setPath(target);
@@ -447,7 +462,10 @@ function Studio() {
     <div className="studio">
       <header>
         <b>Fractograph Studio</b>
-        <select value={path} onChange={(e) => open(e.target.value)} data-testid="graph-select">
+        <select value={path} onChange={(e) => {
+            if (unsaved.current && !window.confirm(`Discard the unsaved edits of ${path}?`)) return;
+            open(e.target.value);
+          }} data-testid="graph-select">
           {!graphs.includes(path) && <option value={path}>{path}</option>}
           {graphs.map((g) => (
             <option key={g} value={g}>{g}</option>
@@ -489,6 +507,7 @@ function Studio() {
             history.current.push(snapshot.current);
             setPositions(next);
             setLayoutDirty(true);
+            unsaved.current = true;
           }}
           deleteKeyCode={["Delete", "Backspace"]}
           minZoom={0.2}

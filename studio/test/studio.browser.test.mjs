@@ -332,6 +332,21 @@ test("the studio edits a graph with a live preview", async (t) => {
     execFileSync(env("FGC"), ["check", saved], { stdio: "inherit" });
   });
 
+  await t.test("switching graphs with unsaved edits asks first, and keeps them when told to", async () => {
+    await setLiteral("round", "radius", "0.09");
+    let asked = "";
+    page.once("dialog", (d) => {
+      asked = d.message();
+      d.dismiss();
+    });
+    await page.select('[data-testid="graph-select"]', "menger.json");
+    await new Promise((r) => setTimeout(r, 500));
+    assert.match(asked, /unsaved edits of saved\/edited\.json/);
+    assert.equal(await page.$eval('[data-testid="graph-select"]', (s) => s.value), "saved/edited.json");
+    assert.ok(await page.$('[data-testid="node-round"]'), "the edited graph is still open");
+    await saveAs("saved/edited.json");
+  });
+
   await t.test("side-by-side stereo shows both eyes", async () => {
     await page.click('[data-testid="stereo"]');
     await page.waitForFunction(() => {
