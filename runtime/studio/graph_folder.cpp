@@ -48,8 +48,11 @@ std::vector<std::string> GraphFolder::list_graphs(std::size_t limit) const {
         if (it.depth() > 4) it.disable_recursion_pending();
         const auto& name = it->path().filename().string();
         if (it->is_directory() && (name == "node_modules" || name.starts_with("."))) it.disable_recursion_pending();
-        if (it->is_regular_file() && it->path().extension() == ".json")
-            out.push_back(fs::relative(it->path(), root_).generic_string());
+        if (!it->is_regular_file() || it->path().extension() != ".json") continue;
+        // By the name it has in the folder (a link's own, not its target's), and only what the
+        // studio would open: a link that leads out of the folder is left out.
+        std::string relative = it->path().lexically_relative(root_).generic_string(), error;
+        if (resolve(relative, error)) out.push_back(relative);
     }
     std::sort(out.begin(), out.end());
     return out;

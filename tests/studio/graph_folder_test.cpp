@@ -52,6 +52,14 @@ TEST_F(GraphFolderTest, RefusesDotDotAbsolutePathsAndLinksThatLeadOut) {
     EXPECT_EQ(text, "{\"secret\": 1}");
 }
 
+// The list names graphs as they are named in the folder, and leaves out what the studio would
+// refuse to open: a link to a graph outside.
+TEST_F(GraphFolderTest, ListsLinksByTheirOwnNameAndNotThoseThatLeadOut) {
+    fs::create_symlink(base / "work" / "sub" / "b.json", base / "work" / "alias.json");
+    auto graphs = GraphFolder(base / "work").list_graphs();
+    EXPECT_EQ(graphs, (std::vector<std::string>{"a.json", "alias.json", "sub/b.json"}));
+}
+
 TEST_F(GraphFolderTest, SavesOnlyGraphs) {
     GraphFolder folder(base / "work");
     std::string error;
