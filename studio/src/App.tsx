@@ -131,14 +131,12 @@ function Studio() {
     window.addEventListener("beforeunload", warn);
     return () => window.removeEventListener("beforeunload", warn);
   }, []);
-  const open = useCallback(
-    async (p: string) => {
-      try {
-        const { graph } = await api.graph(p);
+  const show = useCallback(
+    (p: string, graph: GraphDoc, saved: boolean) => {
         const placed = editorPositions(graph);
         setPath(p);
         setDoc(graph);
-        unsaved.current = false;
+        unsaved.current = !saved;
         setPositions(placed ?? autoLayout(graph, catalogMap));
         setLayoutDirty(false);
         setParams(paramDefaults(graph));
@@ -147,12 +145,37 @@ function Studio() {
         history.current.clear();
         window.history.replaceState(null, "", `?graph=${encodeURIComponent(p)}`);
         window.setTimeout(() => flow.fitView({ padding: 0.1 }), 50);
+    },
+    [catalogMap, flow],
+  );
+  const open = useCallback(
+    async (p: string) => {
+      try {
+        const { graph } = await api.graph(p);
+        show(p, graph, true);
       } catch (e) {
         say(String(e));
       }
     },
-    [catalogMap, flow, say],
+    [show, say],
   );
+  // A new graph to start from (a sphere, lit), unsaved until Save: what an empty folder offers.
+  const newGraph = () => {
+    if (unsaved.current && !window.confirm(`Discard the unsaved edits of ${path}?`)) return;
+    let name = "new.json";
+    for (let i = 2; graphs.includes(name); ++i) name = `new_${i}.json`;
+    show(name, {
+      format: "fractograph-graph",
+      version: 1,
+      name: "New graph",
+      nodes: [
+        { id: "shape", type: "prim.sphere" },
+        { id: "light", type: "light.fake_diffuse" },
+      ],
+      outputs: { distance: "shape.distance", diffuse: "light.diffuse" },
+      scene: { camera: { position: [0, 0.6, 3], target: [0, 0, 0], fov_deg: 60 }, bounds: { radius: 2 } },
+    } as GraphDoc, false);
+  };
 
   useEffect(() => {
     api.nodes().then((r) => setCatalog(r.nodes)).catch((e) => say(String(e)));
@@ -163,7 +186,9 @@ function Studio() {
     const asked = new URLSearchParams(window.location.search).get("graph");
     api.graphs().then((r) => {
       const first = asked ?? (r.opened || r.graphs[0]);
+      // An empty folder starts a new graph rather than showing nothing.
       if (first) open(first);
+      else newGraph();
     });
   }, [catalog, doc, open]);
 
@@ -471,6 +496,7 @@ function Studio() {
             <option key={g} value={g}>{g}</option>
           ))}
         </select>
+        <button onClick={newGraph} data-testid="new-graph">New</button>
         <button onClick={() => save(path)} data-testid="save">Save</button>
         <button
           data-testid="save-as"

@@ -365,4 +365,13 @@ test("the studio edits a graph with a live preview", async (t) => {
     await saveAs("copy/menger.json");
     assert.ok(fs.readFileSync(path.join(folder, "copy/menger.json")).equals(fs.readFileSync(path.join(folder, "menger.json"))));
   });
+
+  await t.test("New starts a graph that compiles and previews, unsaved until saved", async () => {
+    await page.click('[data-testid="new-graph"]');
+    await page.waitForSelector('[data-testid="node-shape"]', { timeout: 30000 });
+    assert.equal(await page.$eval('[data-testid="graph-select"]', (s) => s.value), "new.json");
+    await waitForPreview();
+    await saveAs("new.json");
+    execFileSync(env("FGC"), ["check", path.join(folder, "new.json")], { stdio: "inherit" });
+  });
 });
