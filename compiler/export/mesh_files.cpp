@@ -51,8 +51,10 @@ void write_stl(std::ostream& out, const TriangleMesh& m) {
     for (const auto& t : m.triangles) {
         const glm::vec3 a = m.positions[t.x], b = m.positions[t.y], c = m.positions[t.z];
         const glm::vec3 n = glm::cross(b - a, c - a);
-        const float length = glm::length(n);
-        put(out, length > 0.0f ? n / length : glm::vec3(0.0f));
+        // A sliver's cross product (below 1e-12) is rounding, not a direction: its normal is zero,
+        // as STL readers (admesh) take it, rather than a unit vector they would "fix".
+        const double length = glm::length(glm::dvec3(n));
+        put(out, length >= 1e-12 ? glm::vec3(glm::dvec3(n) / length) : glm::vec3(0.0f));
         put(out, a);
         put(out, b);
         put(out, c);
