@@ -44,6 +44,19 @@ TriangleMesh mesh_level_set(const openvdb::FloatGrid& grid, double adaptivity) {
         add(q[0], q[1], q[2]);
         add(q[0], q[2], q[3]);
     }
+    // Vertices only the left-out triangles used are dropped too: readers count a vertex no
+    // triangle uses as a defect.
+    std::vector<unsigned> kept(mesh.positions.size(), ~0u);
+    for (const auto& t : mesh.triangles)
+        for (unsigned v : {t.x, t.y, t.z}) kept[v] = 0;
+    std::size_t used = 0;
+    for (std::size_t v = 0; v < kept.size(); ++v)
+        if (kept[v] == 0) {
+            kept[v] = static_cast<unsigned>(used);
+            mesh.positions[used++] = mesh.positions[v];
+        }
+    mesh.positions.resize(used);
+    for (auto& t : mesh.triangles) t = glm::uvec3(kept[t.x], kept[t.y], kept[t.z]);
 
     // The level set's gradient at each vertex is the surface's outward normal there: central
     // differences of the interpolated level set (no gradient grid: that would cost 3 floats a voxel).

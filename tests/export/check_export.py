@@ -16,7 +16,9 @@ import sys
 import time
 
 import pyopenvdb
+import numpy
 import vtk
+from vtk.util.numpy_support import vtk_to_numpy
 
 failures = []
 
@@ -65,6 +67,11 @@ def check_mesh(path, stdout):
         return 0.0, 0.0
     if mesh.GetNumberOfCells() != int(m.group(2)) or mesh.GetNumberOfCells() == 0:
         fail(f"{path}: VTK reads {mesh.GetNumberOfCells()} triangles, fgc wrote {m.group(2)}")
+    # Every vertex a PLY or OBJ holds is used by a triangle (STL has no shared vertices).
+    if not path.endswith(".stl"):
+        used = len(numpy.unique(vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())))
+        if used != mesh.GetNumberOfPoints():
+            fail(f"{path}: {mesh.GetNumberOfPoints() - used} of {mesh.GetNumberOfPoints()} vertices in no triangle")
     # Debian's VTK 9.1 vtkFeatureEdges fails to allocate on meshes of millions of triangles (the
     # sponge's at the default resolution): those are checked by admesh on their STL alone.
     if mesh.GetNumberOfCells() <= 1000000:
