@@ -8,7 +8,7 @@ namespace {
 
 using Rule = StageDerivative::Rule;
 
-std::string value(const FormulaProgram& prog, const FormulaStage& s, const FormulaArg& a) {
+std::string value(const FormulaProgram& prog, const FormulaArg& a) {
     switch (a.kind) {
         case FormulaArg::Kind::Orbit: return a.stage < 0 ? "fz_z" : fmt::format("fz_s{}_0", a.stage);
         case FormulaArg::Kind::C: return "fz_c";
@@ -18,7 +18,6 @@ std::string value(const FormulaProgram& prog, const FormulaStage& s, const Formu
         }
         case FormulaArg::Kind::Constant: break;
     }
-    (void)s;
     return a.constant.glsl();
 }
 
@@ -28,7 +27,7 @@ std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, 
     for (std::size_t k = 0; k < g.stages.size(); ++k) {
         const FormulaStage& s = g.stages[k];
         std::string decl, args;
-        for (std::size_t a = 0; a < s.args.size(); ++a) args += (a ? ", " : "") + value(prog, s, s.args[a]);
+        for (std::size_t a = 0; a < s.args.size(); ++a) args += (a ? ", " : "") + value(prog, s.args[a]);
         for (std::size_t o = 0; o < s.def->outputs.size(); ++o) {
             std::string type(type_name(s.def->outputs[o].type.concrete ? *s.def->outputs[o].type.concrete : prog.orbit));
             decl += fmt::format("{}{} fz_s{}_{};", decl.empty() ? "" : " ", type, k, o);
@@ -41,7 +40,7 @@ std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, 
             case Rule::Conformal:
             case Rule::Power: d = fmt::format("fg_scale_dr({}, fz_s{}_{})", d_in, k, s.factor_output); break;
             case Rule::AddC:
-                d = prog.julia ? d_in : fmt::format("{} + abs({})", d_in, value(prog, s, s.args[static_cast<std::size_t>(s.weight_arg)]));
+                d = prog.julia ? d_in : fmt::format("{} + abs({})", d_in, value(prog, s.args[static_cast<std::size_t>(s.weight_arg)]));
                 break;
             default: d = d_in; break;
         }

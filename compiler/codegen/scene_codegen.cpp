@@ -129,21 +129,24 @@ std::vector<const IrInput*> SceneCodegen::surface_roots() const {
 }
 
 void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const std::vector<bool>& skip) const {
-    auto key = [](const IrNode& n) { return std::make_pair(n.def->function_name(), n.generic ? static_cast<int>(*n.generic) : -1); };
+    auto instance = [](const NodeDefinition& def, std::optional<ValueType> generic) {
+        return std::make_pair(def.function_name(), generic ? static_cast<int>(*generic) : -1);
+    };
+    auto key = [&](const IrNode& n) { return instance(*n.def, n.generic); };
     std::set<std::pair<std::string, int>> done;  // (function, generic instance)
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i)
         if (skip[i]) {
             done.insert(key(ir_.nodes[i]));
             if (ir_.nodes[i].formula)
                 for (const auto& [stage, generic] : ir_.nodes[i].formula->stage_definitions())
-                    done.insert({stage->function_name(), generic ? static_cast<int>(*generic) : -1});
+                    done.insert(instance(*stage, generic));
         }
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
         if (!want[i]) continue;
         const IrNode& n = ir_.nodes[i];
         if (n.formula)  // the stages its body calls, before its own function
             for (const auto& [stage, generic] : n.formula->stage_definitions()) {
-                if (!done.insert({stage->function_name(), generic ? static_cast<int>(*generic) : -1}).second) continue;
+                if (!done.insert(instance(*stage, generic)).second) continue;
                 SourceOrigin body;
                 body.kind = SourceOrigin::Kind::Library;
                 body.file = "nodes/" + stage->glsl_path;

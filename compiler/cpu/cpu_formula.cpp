@@ -48,13 +48,14 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
 }
 
 // One pass through a group: as formula_glsl()'s iteration.
-void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias) const {
+void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias,
+                         Scratch& scratch) const {
     const FormulaProgram& prog = *program_;
     const auto& g = prog.groups[static_cast<std::size_t>(group)];
     const auto& fns = functions_[static_cast<std::size_t>(group)];
-    CpuValue outs[kMaxStages][kMaxStageOutputs];
-    double d[kMaxStages];
-    CpuValue args[kMaxStageInputs];
+    auto& outs = scratch.outs;
+    auto& d = scratch.d;
+    auto& args = scratch.args;
     auto value = [&](const FormulaArg& a) {
         switch (a.kind) {
             case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(z) : outs[a.stage][0];
@@ -94,11 +95,12 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     double dr = 1.0, r2 = glm::dot(z, z);
     glm::dvec4 trap(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2);
     int i = 0;
+    Scratch scratch;
     do {
         for (const auto& seg : prog.segments)
             for (int n = 0; (seg.count == 0 || n < seg.count) && i < iterations; ++n, ++i) {
                 if (r2 > bail2) break;
-                iterate(seg.group, in, c, z, dr, bias);
+                iterate(seg.group, in, c, z, dr, bias, scratch);
                 r2 = glm::dot(z, z);
                 trap = glm::min(trap, glm::dvec4(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2));
             }

@@ -26,7 +26,14 @@ private:
     std::shared_ptr<const FormulaProgram> program_;
     std::vector<std::vector<CpuNodeFunction>> functions_;   // per group, per stage
 
-    void iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias) const;
+    // What one pass through a group writes: each stage's outputs and derivative. Made once per
+    // evaluation, not per iteration (4 KB to clear).
+    struct Scratch {
+        CpuValue outs[kMaxStages][kMaxStageOutputs];
+        double d[kMaxStages];
+        CpuValue args[kMaxStageInputs];
+    };
+    void iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias, Scratch& s) const;
 };
 
 }  // namespace fg

@@ -104,6 +104,21 @@ private:
         return out;
     }
 
+    // A body's $param feeds a port of its own type, an int one a float port, and a float one a
+    // vector port (broadcast, as literals are: `splat`).
+    void check_param(const std::string& name, const PortDefinition& port, const GraphNode& n, FormulaArg& a) {
+        const ValueType want = port.type.concrete ? *port.type.concrete : prog_->orbit;
+        for (const auto& decl : params_) {
+            if (decl.name != name) continue;
+            if (decl.type == ValueType::Float && is_vector(want))
+                a.splat = component_count(want);
+            else if (decl.type != want && !(decl.type == ValueType::Int && want == ValueType::Float))
+                diag_.error(fmt::format("type mismatch: input \"{}\" of {} is {}, but parameter \"${}\" is {}", port.name,
+                                        n.type, type_name(want), name, type_name(decl.type)),
+                            n.pointer + "/inputs/" + port.name, node_id_);
+        }
+    }
+
     FormulaStage resolve_stage(const GraphNode& n, int z_from) {
         FormulaStage s;
         s.id = n.id;
@@ -131,10 +146,7 @@ private:
             } else if (b->second.kind == Binding::Kind::Param) {
                 a.kind = FormulaArg::Kind::Input;
                 a.input = param_input(b->second.param);
-                for (const auto& decl : params_)
-                    if (decl.name == b->second.param && decl.type == ValueType::Float && port.type.concrete &&
-                        is_vector(*port.type.concrete))
-                        a.splat = component_count(*port.type.concrete);
+                check_param(b->second.param, port, n, a);
             } else if (b->second.kind == Binding::Kind::Literal) {
                 a.constant = b->second.literal;
                 // A generic port takes the orbit's type; the loader could not know it.

@@ -11,6 +11,14 @@ namespace fg {
 
 namespace {
 
+// The function of a node whose body the graph carries: its IR index and id, '-' not being GLSL.
+std::string generated_function_name(const char* kind, std::size_t index, const std::string& id) {
+    std::string safe = id;
+    for (char& c : safe)
+        if (c == '-') c = '_';
+    return fmt::format("fg_{}_{}_{}", kind, index, safe);
+}
+
 std::shared_ptr<NodeDefinition> make_custom_definition(const GraphNode& n, std::size_t index) {
     auto def = std::make_shared<NodeDefinition>();
     def->type = kCustomNodeType;
@@ -18,10 +26,7 @@ std::shared_ptr<NodeDefinition> make_custom_definition(const GraphNode& n, std::
     def->inputs = n.custom->inputs;
     def->outputs = n.custom->outputs;
     for (const auto& out : def->outputs) def->lipschitz[out.name] = n.custom->lipschitz;
-    std::string safe = n.id;
-    for (char& c : safe)
-        if (c == '-') c = '_';
-    def->function = fmt::format("fg_custom_{}_{}", index, safe);
+    def->function = generated_function_name("custom", index, n.id);
     return def;
 }
 
@@ -40,10 +45,7 @@ std::shared_ptr<NodeDefinition> make_formula_definition(const NodeDefinition& li
     def->running_derivative = prog.describe();
     // The seed disc's estimate moves up to twice as fast as the point (measured: docs/fractals.md).
     if (prog.estimate == FormulaProgram::Estimate::Sheet) def->lipschitz["distance"] = "2 * L(p)";
-    std::string safe = n.id;
-    for (char& c : safe)
-        if (c == '-') c = '_';
-    def->function = fmt::format("fg_formula_{}_{}", index, safe);
+    def->function = generated_function_name("formula", index, n.id);
     return def;
 }
 
@@ -91,28 +93,6 @@ private:
         for (const auto& n : g_.nodes)
             if (!seen.count(n.id))
                 diag_.note(fmt::format("node \"{}\" reaches no output and is removed", n.id), n.pointer, n.id);
-    }
-
-    // A body's $param feeds a stage port of its own type (or an int param a float port).
-    bool check_formula_params(const FormulaProgram& prog, const std::string& id) {
-        bool ok = true;
-        for (const auto& group : prog.groups)
-            for (const auto& s : group.stages)
-                for (std::size_t a = 0; a < s.args.size(); ++a) {
-                    if (s.args[a].kind != FormulaArg::Kind::Input) continue;
-                    const auto& name = prog.params[static_cast<std::size_t>(s.args[a].input - kFormulaFixedPorts)];
-                    const ParamDecl* decl = g_.find_param(name);
-                    ValueType want = s.def->inputs[a].type.concrete ? *s.def->inputs[a].type.concrete : prog.orbit;
-                    if (decl && decl->type == ValueType::Float && is_vector(want)) continue;  // broadcast, as literals are
-                    if (decl && !assignable(decl->type, want)) {
-                        diag_.error(fmt::format("type mismatch: input \"{}\" of {} is {}, but parameter \"${}\" is {}",
-                                                s.def->inputs[a].name, s.def->type, type_name(want), name,
-                                                type_name(decl->type)),
-                                    s.pointer + "/inputs/" + s.def->inputs[a].name, id);
-                        ok = false;
-                    }
-                }
-        return ok;
     }
 
     // Resolve a binding to an IR input (type not yet checked against the port).
@@ -189,7 +169,6 @@ private:
             n.formula = build_formula_program(*node.formula, lib_, g_.params, node.id, diag_);
             const NodeDefinition* library_def = def_of(node);
             if (!n.formula || !library_def) return;
-            if (!check_formula_params(*n.formula, node.id)) return;
             n.custom_def = make_formula_definition(*library_def, *n.formula, g_, node, ir_.nodes.size());
             n.def = n.custom_def.get();
             n.custom_code = formula_glsl(*n.formula);
