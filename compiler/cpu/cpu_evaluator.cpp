@@ -46,12 +46,13 @@ std::optional<CpuEvaluator> CpuEvaluator::create(const IrGraph& ir, Diagnostics&
         ev.slot_count_ += n.def->outputs.size();
     }
     for (const auto& p : ir.params) ev.params_.push_back(CpuValue::of(p.value));
-    std::vector<const IrInput*> distance_roots, all_roots;
+    ev.surface_offsets_.assign(ir.nodes.size(), 0.0);
+    std::vector<const IrInput*> all_roots;
     for (const auto& [name, in] : ir.outputs) {
         all_roots.push_back(&in);
-        if (name == "distance") distance_roots.push_back(&in);
+        if (name == "distance") ev.distance_root_ = in;
     }
-    ev.distance_plan_ = ev.plan_for(distance_roots);
+    ev.distance_plan_ = ev.plan_for({&ev.distance_root_});
     ev.all_plan_ = ev.plan_for(all_roots);
     for (std::size_t i = 0; i < ir.nodes.size(); ++i)
         if (!ir.nodes[i].shade_only) ev.unshaded_plan_.nodes.push_back(static_cast<int>(i));
@@ -92,6 +93,26 @@ bool CpuEvaluator::set_knob(const std::string& spec_name, double value) {
             return true;
         }
     return false;
+}
+
+namespace {
+int distance_port(const IrNode& n) {
+    for (std::size_t i = 0; i < n.def->outputs.size(); ++i)
+        if (n.def->outputs[i].name == "distance") return static_cast<int>(i);
+    return -1;
+}
+}  // namespace
+
+void CpuEvaluator::move_surface(int node, double offset) { surface_offsets_.at(static_cast<std::size_t>(node)) = offset; }
+
+CpuEvaluator CpuEvaluator::part(int node) const {
+    CpuEvaluator copy = *this;
+    copy.distance_root_ = IrInput{};
+    copy.distance_root_.kind = IrInput::Kind::Node;
+    copy.distance_root_.node = node;
+    copy.distance_root_.port = std::max(0, distance_port(ir_->nodes.at(static_cast<std::size_t>(node))));
+    copy.distance_plan_ = copy.plan_for({&copy.distance_root_});
+    return copy;
 }
 
 CpuValue CpuEvaluator::read(const IrInput& in, const std::vector<CpuValue>& slots, const glm::dvec3& p,
@@ -138,6 +159,8 @@ void CpuEvaluator::run(const Plan& plan, std::vector<CpuValue>& slots, const glm
         CpuValue* out = &slots[slot_offset_[static_cast<std::size_t>(idx)]];
         if (const auto& formula = formulas_[static_cast<std::size_t>(idx)]) formula->run(args, out);
         else functions_[static_cast<std::size_t>(idx)](args, out);
+        if (const double offset = surface_offsets_[static_cast<std::size_t>(idx)]; offset != 0.0)
+            out[distance_port(n)].v.x -= offset;
     }
 }
 
@@ -145,7 +168,7 @@ double CpuEvaluator::distance(const glm::dvec3& p) const {
     ++evaluations_;
     std::vector<CpuValue> slots(slot_count_);
     run(distance_plan_, slots, p, nullptr);
-    return read(ir_->outputs.at("distance"), slots, p, nullptr).f();
+    return read(distance_root_, slots, p, nullptr).f();
 }
 
 glm::dvec3 CpuEvaluator::normal(const glm::dvec3& p, double h) const {

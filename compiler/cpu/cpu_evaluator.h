@@ -41,6 +41,11 @@ public:
     // Knob values (specialization constants) by their manifest name, e.g. "bias.bulb".
     bool set_knob(const std::string& spec_name, double value);
     void set_time(double seconds) { time_ = seconds; }
+    // Moves one node's distance output out by `offset` before anything reads it (the export's
+    // surface rule for a part whose estimate has no inside).
+    void move_surface(int node, double offset);
+    // A copy whose distance() is this node's own distance output: one part of the scene alone.
+    CpuEvaluator part(int node) const;
 
     double distance(const glm::dvec3& p) const;
     // Normal by central differences of the double-precision distance.
@@ -75,6 +80,8 @@ private:
     std::size_t slot_count_ = 0;
     std::vector<CpuValue> params_;
     std::map<std::pair<int, int>, double> knobs_;  // (node, input) -> value override
+    std::vector<double> surface_offsets_;          // per node, subtracted from its distance output
+    IrInput distance_root_;
     double time_ = 0.0;
     Plan distance_plan_, all_plan_, unshaded_plan_;
     mutable std::uint64_t evaluations_ = 0;

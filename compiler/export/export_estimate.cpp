@@ -53,11 +53,6 @@ ExportEstimate estimate_export(const ExportField& field, const NarrowBandSetting
     e.leaves = static_cast<double>(last.leaves) * leaves / target.shards;
     e.bytes = kBaseBytes + e.leaves * (kLeafBytes + (mesh ? kMeshBytesPerLeaf : 0.0));
     e.seconds = last.seconds * voxels / target.shards;
-    // At least 1 % of the band inside: a solid's band is about half inside, the thinnest gallery
-    // fractal's 6 %; an estimate without inside still rounds below zero at a few voxels.
-    std::uint64_t inside = 0, active = 0;
-    for (const auto& p : pilots) inside += p.inside_voxels, active += p.active_voxels;
-    e.has_inside = static_cast<double>(inside) >= 0.01 * static_cast<double>(active);
     return e;
 }
 

@@ -16,9 +16,6 @@ struct ExportEstimate {
     double bytes = 0.0;           // peak memory of the process
     double seconds = 0.0;         // sampling time with the target's threads
     double dimension = 2.0;       // D over the last pilot halving
-    // Whether the distance goes negative (inside the shape). Many fractals' estimates measure the
-    // distance to the set and never do: they have no zero crossing to mesh.
-    bool has_inside = false;
 };
 
 ExportEstimate estimate_export(const ExportField& field, const NarrowBandSettings& target, bool mesh);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <numeric>
 #include <thread>
+#include <numeric>
 #include <tuple>
 
 #include <openvdb/tools/Interpolation.h>
@@ -40,9 +40,22 @@ TriangleMesh mesh_level_set(const openvdb::FloatGrid& grid, double adaptivity) {
         if (a != b && b != c && a != c) mesh.triangles.emplace_back(a, c, b);
     };
     for (const auto& t : triangles) add(t[0], t[1], t[2]);
+    // Each quad is split along the diagonal that leaves its worse triangle the better shaped:
+    // the other can leave a needle whose corners are nearly in line, whose normal is rounding.
+    auto quality = [&](unsigned a, unsigned b, unsigned c) {
+        const openvdb::Vec3d p(points[a]), e1 = openvdb::Vec3d(points[b]) - p, e2 = openvdb::Vec3d(points[c]) - p;
+        const double edges = e1.lengthSqr() + e2.lengthSqr() + (e2 - e1).lengthSqr();
+        return edges > 0.0 ? e1.cross(e2).length() / edges : 0.0;
+    };
     for (const auto& q : quads) {
-        add(q[0], q[1], q[2]);
-        add(q[0], q[2], q[3]);
+        if (std::min(quality(q[0], q[1], q[2]), quality(q[0], q[2], q[3])) >=
+            std::min(quality(q[0], q[1], q[3]), quality(q[1], q[2], q[3]))) {
+            add(q[0], q[1], q[2]);
+            add(q[0], q[2], q[3]);
+        } else {
+            add(q[0], q[1], q[3]);
+            add(q[1], q[2], q[3]);
+        }
     }
     // Vertices only the left-out triangles used are dropped too: readers count a vertex no
     // triangle uses as a defect.
@@ -87,6 +100,28 @@ void colour_vertices(TriangleMesh& mesh, const std::function<ColourFunction()>& 
                 }
         });
     for (auto& w : workers) w.join();
+}
+
+}  // namespace fg
+
+namespace fg {
+
+void colour_by_albedo(TriangleMesh& mesh, const CpuEvaluator& scene, double scale, double voxel_size, int threads) {
+    colour_vertices(mesh, [&]() -> ColourFunction {
+        return [ev = scene, scale, voxel_size](glm::dvec3 p, const glm::dvec3& n) {
+            // Where the renderer's march stops at its default hit rule (epsilon 0.5 of a pixel's
+            // half-width) for a pixel one voxel across: a quarter of a voxel.
+            for (double travelled = 0.0, d; (d = ev.distance(p) * scale) > 0.25 * voxel_size && travelled + d <= voxel_size;
+                 travelled += d)
+                p -= d * n;
+            CpuShadeInputs shade;
+            shade.normal = n;
+            shade.to_camera = n;
+            const glm::dvec3 c = glm::clamp(ev.surface(p, shade).albedo, 0.0, 1.0);
+            return glm::mix(c * 12.92, 1.055 * glm::pow(c, glm::dvec3(1.0 / 2.4)) - 0.055,
+                            glm::dvec3(glm::greaterThan(c, glm::dvec3(0.0031308))));
+        };
+    }, threads);
 }
 
 }  // namespace fg

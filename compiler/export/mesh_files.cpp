@@ -50,11 +50,18 @@ void write_stl(std::ostream& out, const TriangleMesh& m) {
     put(out, static_cast<std::uint32_t>(m.triangles.size()));
     for (const auto& t : m.triangles) {
         const glm::vec3 a = m.positions[t.x], b = m.positions[t.y], c = m.positions[t.z];
-        const glm::vec3 n = glm::cross(b - a, c - a);
-        // A sliver's cross product (below 1e-12) is rounding, not a direction: its normal is zero,
-        // as STL readers (admesh) take it, rather than a unit vector they would "fix".
-        const double length = glm::length(glm::dvec3(n));
-        put(out, length >= 1e-12 ? glm::vec3(glm::dvec3(n) / length) : glm::vec3(0.0f));
+        // The normal is recomputed by STL checkers from the float corners. Where two corners are
+        // a rounding error apart (sheets of the surface touching in a voxel), its direction is
+        // the rounding's own, so it is rounded as admesh, the checker slicers' users run, rounds
+        // it: each cross product term is the first product rounded to float minus the second in
+        // double. A cross product below 1e-12 is no direction at all: a zero normal.
+        const glm::vec3 e1 = b - a, e2 = c - a;
+        auto term = [](float x1, float y2, float x2, float y1) {
+            return static_cast<float>(static_cast<float>(double{x1} * y2) - double{x2} * y1);
+        };
+        const glm::dvec3 n(term(e1.y, e2.z, e1.z, e2.y), term(e1.z, e2.x, e1.x, e2.z), term(e1.x, e2.y, e1.y, e2.x));
+        const double length = glm::length(n);
+        put(out, length >= 1e-12 ? glm::vec3(n / length) : glm::vec3(0.0f));
         put(out, a);
         put(out, b);
         put(out, c);

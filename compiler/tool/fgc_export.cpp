@@ -18,6 +18,8 @@
 #include "export/level_set_mesh.h"
 #include "export/mesh_files.h"
 #include "export/narrow_band_sampler.h"
+#include "export/signed_band.h"
+#include "export/surface_rule.h"
 #include "fgc_commands.h"
 #include "progress_bar.h"
 
@@ -146,22 +148,11 @@ void print_level_set(const std::string& path, const openvdb::FloatGrid& grid) {
 }
 
 // The meshes asked for, coloured by the graph's albedo when asked (and a graph is there).
-bool write_meshes(const ExportOptions& o, const openvdb::FloatGrid& grid, const ExportField* field, Diagnostics& diag) {
+bool write_meshes(const ExportOptions& o, const openvdb::FloatGrid& grid, const CpuEvaluator* scene, double scale,
+                  Diagnostics& diag) {
     if (o.meshes.empty()) return true;
     TriangleMesh mesh = mesh_level_set(grid, o.adaptivity);
-    if (o.colors && field) {
-        colour_vertices(mesh, [field]() -> ColourFunction {
-            return [ev = field->evaluator()](const glm::dvec3& p, const glm::dvec3& n) {
-                CpuShadeInputs shade;
-                shade.normal = n;
-                shade.to_camera = n;
-                // The graph's albedo is linear; 8-bit vertex colours are read as sRGB.
-                const glm::dvec3 c = glm::clamp(ev.surface(p, shade).albedo, 0.0, 1.0);
-                return glm::mix(c * 12.92, 1.055 * glm::pow(c, glm::dvec3(1.0 / 2.4)) - 0.055,
-                                glm::dvec3(glm::greaterThan(c, glm::dvec3(0.0031308))));
-            };
-        }, o.threads);
-    }
+    if (o.colors && scene) colour_by_albedo(mesh, *scene, scale, grid.voxelSize()[0], o.threads);
     for (const auto& path : o.meshes) {
         if (!write_mesh(path, mesh, diag)) return false;
         fmt::print("wrote {}: {} vertices, {} triangles{}\n", path, mesh.positions.size(), mesh.triangles.size(),
@@ -179,9 +170,13 @@ int merge(const ExportOptions& o) {
         if (auto grid = read_level_set(path, diag)) shards.push_back(grid);
     if (diag.has_errors()) return report(diag, "fgc export");
     auto whole = merge_shards(shards, o.merge, diag);
+    if (whole) {
+        const auto width = whole->getMetadata<openvdb::DoubleMetadata>("fractograph.half_width_voxels");
+        make_signed_band(*whole, width ? width->value() : o.half_width, o.threads);
+    }
     if (!whole || !write_level_set(o.output, whole, diag)) return report(diag, "fgc export");
     print_level_set(o.output, *whole);
-    return write_meshes(o, *whole, nullptr, diag) ? 0 : report(diag, "fgc export");
+    return write_meshes(o, *whole, nullptr, 1.0, diag) ? 0 : report(diag, "fgc export");
 }
 
 }  // namespace
@@ -211,7 +206,6 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     // The march steps d * step_factor / L; the same factor makes the estimate a distance that
     // does not overestimate, which the narrow band's skipping relies on.
     const double scale = ir->scene.step_factor / analyse_lipschitz(*ir, diag).bound;
-    ExportField field(*ev, scale, o.offset.value_or(0.0), *box);
     const glm::dvec3 size = box->size();
     const double longest = std::max(size.x, std::max(size.y, size.z));
     settings.voxel_size = o.voxel_size > 0.0 ? o.voxel_size : longest / o.resolution;
@@ -222,6 +216,9 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
                                "coordinates", settings.voxel_size, farthest));
         return report(diag, graph);
     }
+    const auto parts = export_parts(*ev, scale, *box, settings.voxel_size, o.threads);
+    const double hit = 0.5 * settings.voxel_size;
+    ExportField field(with_surface_rules(*ev, parts, scale, hit), scale, o.offset.value_or(0.0), *box);
 
     const ExportEstimate e = estimate_export(field, settings, !o.meshes.empty());
     const std::uint64_t limit = o.max_memory ? o.max_memory : half_the_memory();
@@ -238,13 +235,12 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
                                resolution, bytes_text(e.bytes), bytes_text(static_cast<double>(limit))));
         return report(diag, graph);
     }
-    if (!o.offset && !e.has_inside) {
-        field = ExportField(*ev, scale, 0.5 * settings.voxel_size, *box);
-        fmt::print("{}: the distance has no inside (under 1 % of the band is negative: it measures the distance to the set): the "
-                   "surface is taken where it falls under half a voxel, {:g}, as the renderer's hit threshold takes it "
-                   "under a pixel's footprint (--offset to choose)\n",
-                   graph, field.offset());
-    }
+    for (const auto& part : parts)
+        if (!part.has_inside())
+            fmt::print("{}: node \"{}\" has no inside ({:.1f} % of its band is negative: its estimate measures the distance "
+                       "to the set): its surface is taken where it falls under half a voxel, {:g}, as the renderer's hit "
+                       "threshold takes it under a pixel's footprint\n",
+                       graph, part.id, 100.0 * part.inside_share, hit);
     if (o.dry_run) return 0;
 
     std::unique_ptr<ProgressBar> bar;
@@ -257,10 +253,12 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     auto grid = sample_narrow_band(field, settings, o.quiet ? std::function<void(std::size_t, std::size_t)>{} : progress, &stats);
     if (bar) bar->finish();
     fmt::print("sampled {} leaves, {} distance evaluations in {}\n", stats.leaves, stats.evaluations, seconds_text(stats.seconds));
+    // A shard's slab is swept once merged: its distances near the slab's faces need its neighbours.
+    if (settings.shards == 1) make_signed_band(*grid, settings.half_width, o.threads);
     add_metadata(*grid, graph, *ir, *params, field, settings);
     if (!write_level_set(vdb, grid, diag)) return report(diag, graph);
     print_level_set(vdb, *grid);
-    return write_meshes(o, *grid, &field, diag) ? 0 : report(diag, graph);
+    return write_meshes(o, *grid, ev, scale, diag) ? 0 : report(diag, graph);
 }
 
 }  // namespace fg::fgc

@@ -4,7 +4,7 @@ Python reader (pyopenvdb), the meshes by VTK's PLY, OBJ and STL readers (volume,
 and non-manifold edges) and the STL by admesh, the mesh checker slicers' users know.
 
 usage: check_export.py CASE --fgc FGC --source SOURCE_DIR --work WORK_DIR (the test's own folder)
-CASE: shapes | gallery | shards | bad_input
+CASE: shapes | gallery | mixed | shards | bad_input
 """
 import argparse
 import math
@@ -89,7 +89,7 @@ def check_admesh(path):
     out = subprocess.run(["admesh", path], capture_output=True, text=True).stdout
     numbers = dict((k.strip(), int(v)) for k, v in re.findall(r"^([A-Za-z ]+?)\s*:\s+(\d+)", out, re.M))
     for key in ("Total disconnected facets", "Degenerate facets", "Edges fixed", "Facets removed", "Facets added",
-                "Facets reversed", "Backwards edges"):
+                "Facets reversed", "Backwards edges", "Normals fixed"):
         if key not in numbers:
             fail(f"{path}: admesh printed no '{key}':\n{out}")
         elif numbers[key] != 0:
@@ -108,6 +108,17 @@ def check_vdb(path, stdout):
     if said != read or grid.gridClass != pyopenvdb.GridClass.LEVEL_SET or said[0] == 0:
         fail(f"{path}: fgc wrote {said}, OpenVDB reads {read} ({grid.gridClass})")
     return grid
+
+
+def check_signed_band(path, grid, width=3.0):
+    """A true signed band on both sides: active values reach below -1 voxel inside and above +1
+    outside, and none beyond the band's half-width."""
+    h = grid.transform.voxelSize()[0]
+    values = numpy.array([item.value for item in grid.citerOnValues()]) / h
+    inside = numpy.count_nonzero(values < 0.0)
+    print(f"{path}: active values {values.min():+.2f} to {values.max():+.2f} voxels, {inside} of {len(values)} inside")
+    if values.min() > -1.5 or values.max() < 1.5 or numpy.abs(values).max() >= width:
+        fail(f"{path}: active values {values.min():+.2f} to {values.max():+.2f} voxels: not a signed band of {width} voxels")
 
 
 def near(what, value, expected, tolerance=0.01):
@@ -135,7 +146,9 @@ def shapes(args):
         out = os.path.join(args.work, f"{name}{i}")
         meshes = [a for ext in formats for a in ("--mesh", out + ext)]
         stdout = export_ok(args, os.path.join(g, name + ".json"), "-o", out + ".vdb", "--quiet", *meshes, *extra)
-        check_vdb(out + ".vdb", stdout)
+        grid = check_vdb(out + ".vdb", stdout)
+        if grid is not None and name == "sphere":
+            check_signed_band(out + ".vdb", grid)
         for ext in formats:
             v, a = check_mesh(out + ext, stdout)
             near(f"{name} {' '.join(extra)} {ext} volume", v, volume)
@@ -147,6 +160,12 @@ def shapes(args):
 
 # The gallery's graphs without /scene/bounds (endless scenes), with a box around their camera's view.
 BOXES = {"apollonian": "-1,-1,-1,1,1,1", "julia_pool": "-1.5,-1,-1.5,1.5,1,1.5", "kleinian": "-1,-1,-1,1,1,1"}
+
+
+# The gallery's shapes with an interior more than a voxel deep at 48 voxels across (the sheets,
+# sponges and thin sets have none that deep to band).
+SOLID = {"apollonian", "box_menger_hybrid", "bulb_box_hybrid", "julia_pool", "kleinian", "mandelbox", "mandelbox_halls",
+         "mandelbulb", "mandelbulb_power5"}
 
 
 def gallery(args):
@@ -167,7 +186,9 @@ def gallery(args):
             extra += ["--adaptivity", "0.3"]   # merged polygons close as well
         stdout = export_ok(args, os.path.join(folder, name + ".json"), "--resolution", "48", "-o", out + ".vdb",
                            "--mesh", out + ".stl", "--mesh", out + ".ply", "--quiet", *extra)
-        check_vdb(out + ".vdb", stdout)
+        grid = check_vdb(out + ".vdb", stdout)
+        if grid is not None and name in SOLID:
+            check_signed_band(out + ".vdb", grid)
         for ext in (".stl", ".ply"):
             volume, _ = check_mesh(out + ext, stdout)
             if volume <= 0.0:
@@ -182,6 +203,25 @@ def gallery(args):
         reds = {int(colours.GetTuple3(i)[0]) for i in range(colours.GetNumberOfTuples())}
         if len(reds) < 10:
             fail(f"mandelbulb.ply: only {len(reds)} shades of red: the albedo is not sampled per vertex")
+
+
+def mixed(args):
+    """A bulb (an estimate with an inside) smooth-unioned with a Mandelbox (one without): both kept,
+    the box out to its faces at 2.0 on every axis; a signed band of the --band asked for."""
+    out = os.path.join(args.work, "bulb_box")
+    stdout = export_ok(args, os.path.join(args.source, "tests/export/graphs/bulb_box_union.json"), "--resolution", "64",
+                       "--band", "5", "-o", out + ".vdb", "--mesh", out + ".stl", "--quiet")
+    if 'node "box" has no inside' not in stdout or 'node "bulb" has no inside' in stdout:
+        fail(f"the surface rules named are not the box's alone:\n{stdout}")
+    grid = check_vdb(out + ".vdb", stdout)
+    if grid is not None:
+        check_signed_band(out + ".vdb", grid, width=5.0)
+    check_mesh(out + ".stl", stdout)
+    check_admesh(out + ".stl")
+    bounds = read_mesh(out + ".stl").GetBounds()
+    print(f"bulb_box.stl bounds {bounds}")
+    if min(-bounds[0], bounds[1], -bounds[2], bounds[3], -bounds[4], bounds[5]) < 1.95:
+        fail(f"bulb_box.stl bounds {bounds}: the Mandelbox (faces at 2.0) is not whole")
 
 
 def shards(args):
@@ -252,7 +292,7 @@ def bad_input(args):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("case", choices=["shapes", "gallery", "shards", "bad_input"])
+    parser.add_argument("case", choices=["shapes", "gallery", "mixed", "shards", "bad_input"])
     parser.add_argument("--fgc", required=True)
     parser.add_argument("--source", required=True)
     parser.add_argument("--work", required=True)

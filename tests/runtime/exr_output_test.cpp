@@ -14,11 +14,7 @@
 #include <map>
 #include <sys/resource.h>
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfInputPart.h>
-#include <OpenEXR/ImfMultiPartInputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -27,6 +23,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include "exr_parts.h"
 #include "scratch_dir.h"
 #include "frame/aov_images.h"
 #include "frame/cpu_reference_tracer.h"
@@ -36,6 +33,8 @@
 
 using namespace fg;
 using fg::test::RuntimeTest;
+using fg::test::ExrPartPixels;
+using fg::test::read_exr;
 
 namespace {
 
@@ -48,40 +47,6 @@ const char* kStill = R"({
 constexpr const char* kChannels[] = {"R", "G", "B", "A", "Z", "P.X", "P.Y", "P.Z", "N.X", "N.Y",
                                      "N.Z", "AO.Y", "albedo.R", "albedo.G", "albedo.B", "diffuse.Y",
                                      "trap.X", "trap.Y", "trap.Z", "trap.W"};
-
-// One part of an EXR file, every channel as float (OpenEXR converts half).
-struct ExrPartPixels {
-    Imf::Header header;
-    int width = 0, height = 0;
-    std::map<std::string, std::vector<float>> channels;
-    float at(const std::string& c, int x, int y) const { return channels.at(c)[static_cast<std::size_t>(y * width + x)]; }
-};
-
-// Every channel, or only those named in `only`.
-std::vector<ExrPartPixels> read_exr(const std::string& file, const std::vector<std::string>& only = {}) {
-    Imf::MultiPartInputFile in(file.c_str());
-    std::vector<ExrPartPixels> parts;
-    for (int i = 0; i < in.parts(); ++i) {
-        Imf::InputPart part(in, i);
-        ExrPartPixels p;
-        p.header = part.header();
-        const Imath::Box2i window = p.header.dataWindow();
-        p.width = window.max.x - window.min.x + 1;
-        p.height = window.max.y - window.min.y + 1;
-        Imf::FrameBuffer fb;
-        for (auto c = p.header.channels().begin(); c != p.header.channels().end(); ++c) {
-            if (!only.empty() && std::find(only.begin(), only.end(), c.name()) == only.end()) continue;
-            auto& v = p.channels[c.name()];
-            v.resize(static_cast<std::size_t>(p.width * p.height));
-            fb.insert(c.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(v.data()), sizeof(float),
-                                           sizeof(float) * static_cast<std::size_t>(p.width)));
-        }
-        part.setFrameBuffer(fb);
-        part.readPixels(window.min.y, window.max.y);
-        parts.push_back(std::move(p));
-    }
-    return parts;
-}
 
 ExrMatrix from_imath(const Imath::M44f& m) {
     ExrMatrix out{};
