@@ -19,7 +19,7 @@ LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev 
   libspdlog-dev libxxhash-dev libpng-dev libcpp-httplib-dev libopenexr-dev libopenvdb-dev libtbb-dev
   libboost-dev)  # OpenVDB's headers include Boost's, but Debian 12's libopenvdb-dev does not depend on it
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib python3-jsonschema clang
-  libclang-rt-14-dev chromium slurm-wlm munge python3-openvdb python3-vtk9 admesh)
+  libclang-rt-14-dev chromium slurm-wlm munge python3-openvdb python3-vtk9 admesh time)
 
 # Node.js and npm for the studio's page, when the machine has no npm of its own.
 STUDIO_PACKAGES=(nodejs npm)

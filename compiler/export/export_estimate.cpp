@@ -6,12 +6,13 @@
 namespace fg {
 
 namespace {
-// Measured with /usr/bin/time -v on the gallery's Mandelbulb (docs/export.md): the process
-// without the grid, what each leaf of the grid costs, and what meshing adds per leaf.
-constexpr double kBaseBytes = 48.0 * 1024 * 1024;
-// A leaf holds its 512 values on the heap, outside sizeof.
-constexpr double kLeafBytes = sizeof(openvdb::FloatTree::LeafNodeType) + openvdb::FloatTree::LeafNodeType::SIZE * sizeof(float) + 64.0;
-constexpr double kMeshBytesPerLeaf = 6500.0;
+// Measured with /usr/bin/time -v on the gallery's Mandelbulb at 256 and 512 voxels across
+// (docs/export.md), with a margin: the process without the grid, what each sampled leaf of 8^3
+// voxels costs through the sweep that makes the band signed (the grid, OpenVDB's copy of it and
+// its sweep masks), and what meshing needs on top (OpenVDB's mesher, positions, normals, triangles).
+constexpr double kBaseBytes = 96.0 * 1024 * 1024;
+constexpr double kLeafBytes = 8.0 * 1024;
+constexpr double kMeshBytesPerLeaf = 1.0 * 1024;
 
 // How much a count (voxels, leaves) measured at three halvings of the voxel grows over `halvings`
 // more: each by 2^D, D the last pilots' exponent plus its last rise, between 2 and 3. d: the last D.

@@ -207,7 +207,8 @@ def gallery(args):
 
 def mixed(args):
     """A bulb (an estimate with an inside) smooth-unioned with a Mandelbox (one without): both kept,
-    the box out to its faces at 2.0 on every axis; a signed band of the --band asked for."""
+    the box out to its faces at 2.0 on every axis; a signed band of the --band asked for. And the
+    memory estimate errs high."""
     out = os.path.join(args.work, "bulb_box")
     stdout = export_ok(args, os.path.join(args.source, "tests/export/graphs/bulb_box_union.json"), "--resolution", "64",
                        "--band", "5", "-o", out + ".vdb", "--mesh", out + ".stl", "--quiet")
@@ -222,6 +223,28 @@ def mixed(args):
     print(f"bulb_box.stl bounds {bounds}")
     if min(-bounds[0], bounds[1], -bounds[2], bounds[3], -bounds[4], bounds[5]) < 1.95:
         fail(f"bulb_box.stl bounds {bounds}: the Mandelbox (faces at 2.0) is not whole")
+    estimate_errs_high(args)
+
+
+def estimate_errs_high(args):
+    """The memory estimate printed before the work is not below the process's measured peak."""
+    out = os.path.join(args.work, "bulb192")
+    argv = [args.fgc, "export", os.path.join(args.source, "graphs/gallery/mandelbulb.json"), "--resolution", "192",
+            "-o", out + ".vdb", "--mesh", out + ".stl", "--quiet"]
+    # GNU time reports the peak of the process it starts; a child of this Python would count its
+    # (VTK's) pages from before the exec.
+    result = subprocess.run(["/usr/bin/time", "-f", "peak %M KiB", *argv], capture_output=True, text=True)
+    stdout = result.stdout
+    peak_line = re.search(r"peak (\d+) KiB", result.stderr)
+    m = re.search(r"([\d.]+) (MiB|GiB) peak memory", stdout)
+    if result.returncode != 0 or not m or not peak_line:
+        fail(f"fgc export at 192 voxels: exit {result.returncode}:\n{stdout}{result.stderr}")
+        return
+    estimate = float(m.group(1)) * (1024 if m.group(2) == "GiB" else 1)
+    peak = int(peak_line.group(1)) / 1024.0
+    print(f"memory: estimate {estimate:.0f} MiB, measured peak {peak:.0f} MiB")
+    if estimate < peak:
+        fail(f"the memory estimate {estimate:.0f} MiB is below the measured peak {peak:.0f} MiB")
 
 
 def shards(args):
