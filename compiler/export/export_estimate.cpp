@@ -13,6 +13,9 @@ namespace {
 constexpr double kBaseBytes = 96.0 * 1024 * 1024;
 constexpr double kLeafBytes = 8.0 * 1024;
 constexpr double kMeshBytesPerLeaf = 1.0 * 1024;
+// A shard is not swept (its merge is): its leaves cost what OpenVDB's float leaf holds, its 512
+// values on the heap outside sizeof.
+constexpr double kSampledLeafBytes = sizeof(openvdb::FloatTree::LeafNodeType) + openvdb::FloatTree::LeafNodeType::SIZE * sizeof(float) + 64.0;
 
 // How much a count (voxels, leaves) measured at three halvings of the voxel grows over `halvings`
 // more: each by 2^D, D the last pilots' exponent plus its last rise, between 2 and 3. d: the last D.
@@ -52,7 +55,8 @@ ExportEstimate estimate_export(const ExportField& field, const NarrowBandSetting
     const double leaves = extrapolate({pilots[0].leaves, pilots[1].leaves, last.leaves}, halvings);
     e.active_voxels = static_cast<double>(last.active_voxels) * voxels / target.shards;
     e.leaves = static_cast<double>(last.leaves) * leaves / target.shards;
-    e.bytes = kBaseBytes + e.leaves * (kLeafBytes + (mesh ? kMeshBytesPerLeaf : 0.0));
+    const bool swept = target.shards == 1 || mesh;
+    e.bytes = kBaseBytes + e.leaves * (swept ? kLeafBytes + (mesh ? kMeshBytesPerLeaf : 0.0) : kSampledLeafBytes);
     e.seconds = last.seconds * voxels / target.shards;
     return e;
 }
