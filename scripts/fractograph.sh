@@ -12,7 +12,7 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=${FG_BUILD_DIR:-$ROOT/build}
 JOBS=${FG_JOBS:-$(nproc)}
 
-BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config)
+BUILD_PACKAGES=(build-essential cmake ninja-build pkg-config ccache)
 LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev spirv-cross libvulkan-dev
   mesa-vulkan-drivers vulkan-tools vulkan-validationlayers libglm-dev nlohmann-json3-dev libopenxr-dev
   libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libstb-dev libcli11-dev libfmt-dev
@@ -67,8 +67,9 @@ build() {
   if [ ! -f "$BUILD/build.ninja" ] || { [ $with_tests = ON ] && grep -q '^FG_BUILD_TESTS:BOOL=OFF' "$BUILD/CMakeCache.txt"; }; then
     say "configuring $BUILD"
     # -g1: line tables name file and line in backtraces and profiles; full -g costs a fifth more build time.
+    # shellcheck disable=SC2046
     cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-      -DFG_BUILD_TESTS=$with_tests -DFG_BUILD_BENCH=$with_tests >/dev/null
+      -DFG_BUILD_TESTS=$with_tests -DFG_BUILD_BENCH=$with_tests $(launcher) >/dev/null
   fi
   say "building (log: $BUILD/build.log)"
   run_logged "$BUILD/build.log" cmake --build "$BUILD" -j "$JOBS"
@@ -91,6 +92,11 @@ run_logged() {
   set -e
   if [ $rc -ne 0 ]; then tail -60 "$log"; echo "failed: $*"; exit 1; fi
 }
+
+# ccache keeps compiled objects between builds of any clone (paths under the clone are hashed
+# relative to it), so a fresh clone on a machine that built before recompiles only what changed.
+export CCACHE_BASEDIR=$ROOT CCACHE_NOHASHDIR=1
+launcher() { command -v ccache >/dev/null && echo "-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; true; }
 
 # Headless runs use Mesa's lavapipe; keep its shader cache out of the home folder.
 export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$BUILD/mesa-cache}
@@ -134,8 +140,9 @@ SANITIZE_BUILD=$BUILD-sanitize
 build_sanitized() {
   local san=$SANITIZE_BUILD
   if [ ! -f "$san/build.ninja" ]; then
+    # shellcheck disable=SC2046
     cmake -S "$ROOT" -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-      -DFG_SANITIZE=ON -DFG_BUILD_BENCH=OFF >/dev/null
+      -DFG_SANITIZE=ON -DFG_BUILD_BENCH=OFF $(launcher) >/dev/null
   fi
   say "building with ASan + UBSan (log: $san/build.log)"
   run_logged "$san/build.log" cmake --build "$san" -j "$JOBS"
