@@ -41,6 +41,8 @@ int compile(const Common& c, const std::string& graph, const std::string& output
 int info(const Common& c, const std::string& pack, bool json);
 int nodes(const Common& c, const std::string& type, bool markdown);
 int probe(const Common& c, const std::string& graph, double x, double y, double z);
+// A Mandelbulber settings file as a graph (default output: its name with .json).
+int import_scene(const Common& c, const std::string& fract, const std::string& output);
 
 struct CalibrateOptions {
     int samples = 10000;

@@ -47,6 +47,12 @@ int main(int argc, char** argv) {
     probe->add_option("y", y)->required();
     probe->add_option("z", z)->required();
 
+    std::string fract;
+    auto* import_cmd = app.add_subcommand("import", "make a graph of a Mandelbulber settings file (.fract): camera, formula or hybrid, "
+                                                    "iterations; what cannot be imported is named (docs/formulas.md)");
+    import_cmd->add_option("scene", fract, "Mandelbulber settings file")->required();
+    import_cmd->add_option("-o,--output", output, "graph to write (default: the scene's name with .json)");
+
     fg::fgc::CalibrateOptions calib;
     auto* calibrate = app.add_subcommand("calibrate", "measure the derivative bias the graph's fractals need (bubble search) and write it into the graph");
     calibrate->add_option("graph", graph, "graph JSON")->required();
@@ -71,5 +77,6 @@ int main(int argc, char** argv) {
     if (*info) return fg::fgc::info(common, pack, json);
     if (*nodes) return fg::fgc::nodes(common, type, markdown);
     if (*probe) return fg::fgc::probe(common, graph, x, y, z);
+    if (*import_cmd) return fg::fgc::import_scene(common, fract, output);
     return 2;
 }

@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""fgc import against Mandelbulber2 itself: each scene rendered headless by Mandelbulber2 (2.20,
+Debian's package) and, imported, by fgplay, both SIZE x SIZE; the silhouettes (Mandelbulber2's
+alpha, fgplay's depth) compared as intersection over union. With --coverage, first imports every
+example scene Mandelbulber2 ships and counts what imports and why the rest does not.
+
+usage: import_silhouettes.py BUILD OUT_DIR [--size 256] [--coverage] [SCENE.fract ...]
+Writes OUT_DIR/silhouettes.md (the table), OUT_DIR/silhouettes.png (per scene: Mandelbulber2's
+mask, fgplay's, their difference) and, with --coverage, OUT_DIR/coverage.md.
+"""
+import argparse
+import collections
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy
+from PIL import Image
+
+EXAMPLES = "/usr/share/mandelbulber2/examples"
+
+
+def run(argv, **kw):
+    return subprocess.run(argv, capture_output=True, text=True, **kw)
+
+
+def coverage(build, out):
+    scenes = sorted(os.path.join(d, f) for d, _, fs in os.walk(EXAMPLES) for f in fs if f.endswith(".fract"))
+    imported, reasons = [], collections.Counter()
+    with tempfile.TemporaryDirectory() as work:
+        for i, scene in enumerate(scenes):
+            r = run([f"{build}/compiler/fgc", "import", scene, "-o", os.path.join(work, "x.json")])
+            if r.returncode == 0:
+                imported.append(scene)
+            else:
+                first = next((l for l in r.stderr.splitlines() if "error:" in l), r.stderr.strip()[:100])
+                reason = re.sub(r"^.*?error: (line \d+: )?", "", first)
+                reason = re.sub(r"formula_\d (\d+): this formula.*", r"formula \1 is not imported", reason)
+                reason = re.sub(r"^(\w+?)_?\d*: .*? is not imported \((.*)\)$", r"\1: \2", reason)
+                reasons[reason[:110]] += 1
+            if (i + 1) % 50 == 0 or i + 1 == len(scenes):
+                print(f"{i + 1}/{len(scenes)} scenes, {len(imported)} imported", file=sys.stderr)
+    print(file=sys.stderr)
+    with open(os.path.join(out, "coverage.md"), "w") as f:
+        f.write(f"{len(imported)} of {len(scenes)} example scenes imported ({100 * len(imported) / len(scenes):.1f} %).\n\n")
+        f.write("| scenes | first reason the rest are refused |\n|---:|---|\n")
+        for reason, n in reasons.most_common():
+            f.write(f"| {n} | {reason} |\n")
+    print(f"{len(imported)} of {len(scenes)} imported")
+    return imported
+
+
+def silhouettes(build, out, scenes, size):
+    rows, tiles = [], []
+    home = tempfile.mkdtemp()   # Mandelbulber2 writes its settings folder into HOME
+    for scene in scenes:
+        name = os.path.splitext(os.path.basename(scene))[0]
+        with tempfile.TemporaryDirectory() as work:
+            mb = os.path.join(work, "mb.png")
+            r = run(["mandelbulber2", "-n", "-r", f"{size}x{size}", "-f", "png16alpha", "-o", mb, scene],
+                    env={**os.environ, "HOME": home}, timeout=600)
+            graph, pack = os.path.join(work, "scene.json"), os.path.join(work, "scene.fgpack")
+            imp = run([f"{build}/compiler/fgc", "import", scene, "-o", graph])
+            if r.returncode or not os.path.exists(mb) or imp.returncode:
+                print(f"{name}: skipped ({'mandelbulber2' if r.returncode else 'import'} failed)")
+                continue
+            run([f"{build}/compiler/fgc", "compile", graph, "-o", pack], check=True)
+            run([f"{build}/runtime/fgplay", "render", pack, "--out", work, "--size", f"{size}x{size}", "--ipd", "0",
+                 "--depth"], check=True)
+            theirs = numpy.array(Image.open(mb))[..., 3] > 127
+            ours = numpy.array(Image.open(os.path.join(work, "depth_left.png"))) > 0
+            union = numpy.count_nonzero(theirs | ours)
+            iou = numpy.count_nonzero(theirs & ours) / union if union else 1.0
+            rows.append((name, iou, theirs.mean(), ours.mean(), imp.stdout.strip().split(": ")[-1]))
+            tiles.append(numpy.concatenate([theirs, ours, theirs ^ ours], axis=1))
+            print(f"{name}: IoU {iou:.3f}")
+    with open(os.path.join(out, "silhouettes.md"), "w") as f:
+        f.write(f"| scene | IoU | Mandelbulber2 coverage | fgplay coverage | imported as |\n|---|---:|---:|---:|---|\n")
+        for name, iou, a, b, what in rows:
+            f.write(f"| {name} | {iou:.3f} | {100 * a:.1f} % | {100 * b:.1f} % | {what} |\n")
+    if tiles:
+        Image.fromarray((numpy.concatenate(tiles, axis=0) * 255).astype(numpy.uint8)).save(os.path.join(out, "silhouettes.png"))
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("build")
+    p.add_argument("out")
+    p.add_argument("scenes", nargs="*")
+    p.add_argument("--size", type=int, default=256)
+    p.add_argument("--coverage", action="store_true")
+    a = p.parse_intermixed_args()
+    os.makedirs(a.out, exist_ok=True)
+    scenes = a.scenes
+    if a.coverage:
+        imported = coverage(a.build, a.out)
+        scenes = scenes or imported
+    silhouettes(a.build, a.out, scenes, a.size)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,241 @@
+#include "mandelbulber_import.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <functional>
+#include <set>
+
+#include "mandelbulber_formulas.h"
+
+namespace fg {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr int kSlots = 9;   // Mandelbulber's formula slots, [fractal_1] to [fractal_9]
+
+// Mandelbulber's z is up, the graph's y: (x, y, z) there is (x, z, -y) here (both right-handed).
+json to_graph(const glm::dvec3& v) { return json::array({v.x, v.z, -v.y}); }
+
+// Mandelbulber 2.10 and older (legacy_coordinate_system) rendered in left-handed axes: its picture
+// is the mirror of the right-handed one. The mirrored world, y -> -y, gives it back; every imported
+// formula is symmetric under that mirror (the bulb's phi -> -phi, the folds'), so only the camera
+// and a Julia constant move.
+glm::dvec3 mirror_y(glm::dvec3 v) { return {v.x, -v.y, v.z}; }
+
+// Main settings that change the shape and are imported only at the value that leaves it alone.
+struct ShapeSetting {
+    std::string key;
+    std::function<bool(const std::string&)> neutral;
+    const char* what;
+};
+
+std::vector<ShapeSetting> shape_settings() {
+    auto number = [](double x) { return [x](const std::string& t) { return fract_number(t) == x; }; };
+    auto vector = [](double x) { return [x](const std::string& t) { return fract_vector(t) == glm::dvec3(x); }; };
+    auto text = [](const char* v) { return [v](const std::string& t) { return t == v; }; };
+    std::vector<ShapeSetting> out{
+        {"perspective_type", number(0.0), "only the three-point perspective is imported"},
+        {"boolean_operators", text("false"), "boolean combinations of formulas"},
+        {"fractal_constant_factor", [](const std::string& t) { auto v = fract_vector(t); return v && v->x == v->y && v->y == v->z; },
+         "c scaled unevenly"},
+        {"fractal_position", vector(0.0), "a moved fractal"},
+        {"fractal_rotation", vector(0.0), "a rotated fractal"},
+        {"repeat", vector(0.0), "repetition of space"},
+        {"interior_mode", text("false"), "the interior mode"},
+        {"iteration_threshold_mode", text("false"), "the surface by iteration count"},
+    };
+    for (int i = 1; i <= kSlots; ++i) {
+        out.push_back({fmt::format("formula_position_{}", i), vector(0.0), "a moved formula"});
+        out.push_back({fmt::format("formula_rotation_{}", i), vector(0.0), "a rotated formula"});
+        out.push_back({fmt::format("formula_repeat_{}", i), vector(0.0), "a repeated formula"});
+        out.push_back({fmt::format("formula_scale_{}", i), number(1.0), "a scaled formula"});
+        out.push_back({fmt::format("formula_start_iteration_{}", i), number(0.0), "a formula starting at a later iteration"});
+        out.push_back({fmt::format("formula_stop_iteration_{}", i), number(250.0), "a formula stopping at an iteration"});
+        out.push_back({fmt::format("check_for_bailout_{}", i), text("true"), "a formula that skips the bailout test"});
+        out.push_back({fmt::format("formula_weight_{}", i), number(1.0), "a weighted formula"});
+    }
+    return out;
+}
+
+// Main settings read below; everything else of [main_parameters] is the look (or bookkeeping).
+const std::set<std::string>& read_settings() {
+    static const std::set<std::string> keys = [] {
+        std::set<std::string> k{"camera", "target", "camera_top", "fov", "N", "bailout", "use_default_bailout", "DE_factor",
+                                "detail_level", "julia_mode", "julia_c", "hybrid_fractal_enable", "repeat_from",
+                                "legacy_coordinate_system", "fractal_constant_factor", "limits_enabled", "limit_min",
+                                "limit_max",
+                                // Derived from camera and target, or the image's own size.
+                                "camera_rotation", "camera_distance_to_target", "image_width", "image_height"};
+        for (int i = 1; i <= kSlots; ++i)
+            for (const char* base : {"formula_", "formula_iterations_", "fractal_enable_", "dont_add_c_constant_"})
+                k.insert(fmt::format("{}{}", base, i));
+        return k;
+    }();
+    return keys;
+}
+
+class Importer {
+public:
+    Importer(const FractSettings& s, Diagnostics& diag) : s_(s), diag_(diag) {}
+
+    std::string text(const std::string& key, const std::string& fallback) const {
+        const FractValue* v = s_.find(key);
+        return v ? v->text : fallback;
+    }
+    double number(const std::string& key, double fallback) {
+        const FractValue* v = s_.find(key);
+        if (!v) return fallback;
+        if (auto x = fract_number(v->text)) return *x;
+        error(*v, key, fmt::format("'{}' is not a number", v->text));
+        return fallback;
+    }
+    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) {
+        const FractValue* v = s_.find(key);
+        if (!v) return fallback;
+        if (auto x = fract_vector(v->text)) return *x;
+        error(*v, key, fmt::format("'{}' is not three numbers", v->text));
+        return fallback;
+    }
+    bool flag(const std::string& key, bool fallback) {
+        const FractValue* v = s_.find(key);
+        if (!v) return fallback;
+        if (auto x = fract_bool(v->text)) return *x;
+        error(*v, key, fmt::format("'{}' is not true or false", v->text));
+        return fallback;
+    }
+    void error(const FractValue& v, const std::string& key, const std::string& why) {
+        diag_.error(fmt::format("line {}: {}: {}", v.line, key, why));
+    }
+
+    std::optional<json> run(const std::string& name) {
+        for (const auto& setting : shape_settings())
+            if (const FractValue* v = s_.find(setting.key); v && !setting.neutral(v->text))
+                error(*v, setting.key, fmt::format("{} is not imported ({})", v->text, setting.what));
+        for (const auto& [key, value] : *s_.section("main_parameters"))
+            if (key.starts_with("primitive_") && key.ends_with("_enabled") && value.text == "true")
+                error(value, key, "primitive shapes are not imported");
+        json formula = formula_body();
+        json scene = camera();
+        const int iterations = static_cast<int>(std::lround(number("N", 250.0)));
+        json inputs{{"iterations", std::clamp(iterations, 1, 256)}, {"bailout", bailout_}, {"bias", 1.0}};
+        if (flag("julia_mode", false)) {
+            const json c = to_graph(world(vector("julia_c", glm::dvec3(0.0))));
+            inputs["c"] = json::array({c[0], c[1], c[2], 0.0});
+            formula["julia"] = true;
+        }
+        const double step = number("DE_factor", 1.0), detail = number("detail_level", 1.0);
+        if (diag_.has_errors()) return std::nullopt;
+        warn_looks();
+        if (iterations > 256) diag_.warning(fmt::format("N {}: imported as 256 iterations, the formula node's most", iterations));
+        if (step < 1.0) scene["step_factor"] = std::max(step, 0.05);
+        if (detail != 1.0)
+            diag_.warning(fmt::format("detail_level {:g}: the hit threshold is the renderer's; render with fgplay --detail {:g}", detail, detail));
+        json nodes = json::array({
+            {{"id", "fractal"}, {"type", "fractal.formula"}, {"inputs", inputs}, {"formula", formula}},
+            {{"id", "trap"}, {"type", "math.split4"}, {"inputs", {{"v", "fractal.trap"}}}},
+            {{"id", "tone"}, {"type", "math.scale"}, {"inputs", {{"v", "trap.w"}, {"s", 0.5}}}},
+            {{"id", "palette"}, {"type", "palette.cosine"}, {"inputs", {{"t", "tone"}, {"a", {0.55, 0.5, 0.45}}, {"b", {0.35, 0.3, 0.25}},
+                                                                        {"c", {1.0, 1.0, 1.0}}, {"d", {0.0, 0.1, 0.2}}}}},
+            {{"id", "light"}, {"type", "light.fake_diffuse"}, {"inputs", json::object()}},
+            {{"id", "occlusion"}, {"type", "light.fake_ao"}, {"inputs", json::object()}}});
+        std::string distance = "fractal.distance";
+        if (flag("limits_enabled", false)) {
+            // Cut by the box of limit_min and limit_max: the intersection with it.
+            const glm::dvec3 lo = world(vector("limit_min", glm::dvec3(-10.0))), hi = world(vector("limit_max", glm::dvec3(10.0)));
+            const json centre = to_graph(0.5 * (lo + hi)), half = to_graph(0.5 * glm::abs(hi - lo));
+            nodes.push_back({{"id", "limits_at"}, {"type", "xform.translate"}, {"inputs", {{"offset", centre}}}});
+            nodes.push_back({{"id", "limits"}, {"type", "prim.box"},
+                             {"inputs", {{"p", "limits_at.p"}, {"size", {std::abs(half[0].get<double>()), std::abs(half[1].get<double>()),
+                                                                        std::abs(half[2].get<double>())}}}}});
+            nodes.push_back({{"id", "cut"}, {"type", "op.intersect"}, {"inputs", {{"a", "fractal.distance"}, {"b", "limits.distance"}}}});
+            distance = "cut.distance";
+        }
+        return json{
+            {"format", "fractograph-graph"},
+            {"version", 1},
+            {"name", name},
+            {"description", fmt::format("Imported from a Mandelbulber settings file: {}.", description_)},
+            {"nodes", nodes},
+            {"outputs", {{"distance", distance}, {"albedo", "palette.color"}, {"diffuse", "light.diffuse"}, {"ao", "occlusion.ao"}}},
+            {"scene", scene}};
+    }
+
+private:
+    // The formula, or the hybrid: every enabled slot in order, each for its iteration count, over
+    // and over.
+    json formula_body() {
+        const bool hybrid = flag("hybrid_fractal_enable", false);
+        json groups = json::array(), schedule = json::array();
+        std::vector<std::string> names;
+        for (int slot = 1; slot <= (hybrid ? kSlots : 1); ++slot) {
+            const int number = static_cast<int>(std::lround(this->number(fmt::format("formula_{}", slot), slot == 1 ? 2.0 : 0.0)));
+            if (number == 0 || !flag(fmt::format("fractal_enable_{}", slot), true)) continue;
+            const AddC c{!flag(fmt::format("dont_add_c_constant_{}", slot), false), vector("fractal_constant_factor", glm::dvec3(1.0)).x};
+            auto f = import_formula(number, slot, c, s_, diag_);
+            if (!f) continue;
+            const std::string group = fmt::format("slot{}_{}", slot, f->name);
+            groups.push_back({{"name", group}, {"nodes", f->nodes}});
+            const int count = static_cast<int>(std::lround(this->number(fmt::format("formula_iterations_{}", slot), 1.0)));
+            schedule.push_back({{"group", group}, {"count", std::max(count, 1)}});
+            names.push_back(count > 1 ? fmt::format("{} x{}", f->name, count) : f->name);
+            bailout_ = std::max(bailout_, f->bailout);
+        }
+        if (!flag("use_default_bailout", true)) bailout_ = number("bailout", 100.0);
+        if (hybrid) {
+            if (const FractValue* v = s_.find("repeat_from"); v && fract_number(v->text) != 1.0)
+                error(*v, "repeat_from", fmt::format("{} is not imported (the hybrid repeats from its first formula)", v->text));
+            description_ = "the hybrid " + fmt::format("{}", fmt::join(names, ", then ")) + ", repeated";
+        } else if (!names.empty()) {
+            description_ = "the " + names.front();
+        }
+        if (groups.empty() && !diag_.has_errors()) diag_.error("no formula enabled in any slot");
+        json body{{"groups", groups}};
+        if (hybrid) {
+            body["schedule"] = schedule;
+            body["repeat"] = true;
+        }
+        return body;
+    }
+
+    // Mandelbulber's three-point perspective: fov is the tangent span of the view, 2 tan(angle / 2).
+    glm::dvec3 world(glm::dvec3 v) { return flag("legacy_coordinate_system", false) ? mirror_y(v) : v; }
+
+    json camera() {
+        const glm::dvec3 position = world(vector("camera", {3.0, -6.0, 2.0})), target = world(vector("target", glm::dvec3(0.0)));
+        const glm::dvec3 top = world(vector("camera_top", {-0.1277753, 0.2555506, 0.958314}));
+        const double fov = number("fov", 1.0);
+        const double degrees = 2.0 * std::atan(0.5 * fov) * 180.0 / 3.14159265358979323846;
+        if (degrees < 10.0 || degrees > 170.0)
+            if (const FractValue* v = s_.find("fov")) error(*v, "fov", fmt::format("{} is a view of {:.1f} degrees; 10 to 170 are imported", v->text, degrees));
+        return json{{"camera", {{"position", to_graph(position)}, {"target", to_graph(target)}, {"up", to_graph(top)},
+                                {"fov_deg", std::clamp(degrees, 10.0, 170.0)}}}};
+    }
+
+    void warn_looks() {
+        std::vector<std::string> looks;
+        std::set<std::string> shape;
+        for (const auto& setting : shape_settings()) shape.insert(setting.key);
+        for (const auto& [key, value] : *s_.section("main_parameters"))
+            if (!read_settings().count(key) && !shape.count(key) && !key.starts_with("primitive_")) looks.push_back(key);
+        if (!looks.empty())
+            diag_.warning(fmt::format("{} settings of the look are not imported (the graph gets a palette by orbit trap, "
+                                      "fake diffuse light and ambient occlusion): {}", looks.size(), fmt::join(looks, ", ")));
+    }
+
+    const FractSettings& s_;
+    Diagnostics& diag_;
+    double bailout_ = 0.0;
+    std::string description_;
+};
+
+}  // namespace
+
+std::optional<nlohmann::ordered_json> import_mandelbulber(const FractSettings& settings, const std::string& name, Diagnostics& diag) {
+    return Importer(settings, diag).run(name);
+}
+
+}  // namespace fg

@@ -1,0 +1,131 @@
+// fgc import: Mandelbulber settings files made graphs. The file's reading (decimal commas, line
+// numbers), the camera's axes and angle, hybrids' schedules, and the refusals that name what is
+// not imported. That the imported shapes are Mandelbulber2's own is measured against its renders
+// by bench/mandelbulber2/import_silhouettes.py.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "import/mandelbulber_import.h"
+#include "test_support.h"
+
+using namespace fg;
+using nlohmann::ordered_json;
+
+namespace {
+
+std::optional<ordered_json> import_text(const std::string& text, Diagnostics& diag) {
+    auto settings = FractSettings::parse(text, diag);
+    return settings ? import_mandelbulber(*settings, "scene", diag) : std::nullopt;
+}
+
+bool said(const Diagnostics& diag, Severity severity, const std::string& text) {
+    for (const auto& d : diag.items())
+        if (d.severity == severity && d.message.find(text) != std::string::npos) return true;
+    return false;
+}
+
+const char* kHeader = "# Mandelbulber settings file\n# version 2.20\n[main_parameters]\n";
+
+}  // namespace
+
+TEST(FractSettings, reads_decimal_commas_and_vectors_and_names_the_line_of_a_bad_one) {
+    Diagnostics diag;
+    auto s = FractSettings::parse(std::string(kHeader) + "camera 2,5 -1,25 3;\nN 12;\n[fractal_1]\npower 8,5;\n[frames]\nframe;a;b\n", diag);
+    ASSERT_TRUE(s) << diag.format();
+    EXPECT_EQ(fract_vector(s->find("camera")->text), glm::dvec3(2.5, -1.25, 3.0));
+    EXPECT_EQ(fract_number(s->find("power", "fractal_1")->text), 8.5);
+    EXPECT_EQ(s->find("power", "fractal_1")->line, 7);
+    EXPECT_EQ(fract_number("1e-3"), 0.001);
+    EXPECT_FALSE(fract_number("12abc"));
+    EXPECT_FALSE(fract_vector("1 2"));
+
+    Diagnostics bad;
+    EXPECT_FALSE(FractSettings::parse(std::string(kHeader) + "camera 1 2 3\n", bad));
+    EXPECT_TRUE(said(bad, Severity::Error, "line 4: expected 'name value;'")) << bad.format();
+    Diagnostics other;
+    EXPECT_FALSE(FractSettings::parse("[settings]\nx 1;\n", other));
+    EXPECT_TRUE(said(other, Severity::Error, "no [main_parameters]")) << other.format();
+}
+
+TEST(MandelbulberImport, the_camera_turns_z_up_into_y_up_and_the_fov_into_degrees) {
+    Diagnostics diag;
+    auto g = import_text(std::string(kHeader) + "camera 3 -6 2;\ntarget 0 1 0;\ncamera_top 0 0 1;\nfov 0,5;\nformula_1 2;\n", diag);
+    ASSERT_TRUE(g) << diag.format();
+    const auto& cam = (*g)["scene"]["camera"];
+    EXPECT_EQ(cam["position"], ordered_json({3.0, 2.0, 6.0}));
+    EXPECT_EQ(cam["target"], ordered_json({0.0, 0.0, -1.0}));
+    EXPECT_EQ(cam["up"], ordered_json({0.0, 1.0, -0.0}));
+    // Three-point perspective: fov is 2 tan(angle / 2).
+    EXPECT_NEAR(cam["fov_deg"].get<double>(), 2.0 * std::atan(0.25) * 180.0 / M_PI, 1e-9);
+
+    // Mandelbulber 2.10 and older: left-handed, so the camera mirrors in y.
+    Diagnostics legacy;
+    auto l = import_text(std::string(kHeader) + "legacy_coordinate_system true;\ncamera 3 -6 2;\nformula_1 8;\n", legacy);
+    ASSERT_TRUE(l) << legacy.format();
+    EXPECT_EQ((*l)["scene"]["camera"]["position"], ordered_json({3.0, 2.0, -6.0}));
+}
+
+TEST(MandelbulberImport, a_hybrid_runs_its_slots_in_order_for_their_counts_over_and_over_and_compiles) {
+    Diagnostics diag;
+    auto g = import_text(std::string(kHeader) +
+                             "hybrid_fractal_enable true;\nformula_1 8;\nformula_2 2;\nformula_iterations_1 2;\nN 12;\n"
+                             "fractal_constant_factor 0,9 0,9 0,9;\n[fractal_1]\nmandelbox_scale -1,5;\n[fractal_2]\npower 2;\n",
+                         diag);
+    ASSERT_TRUE(g) << diag.format();
+    const auto& f = (*g)["nodes"][0];
+    EXPECT_EQ(f["type"], "fractal.formula");
+    EXPECT_EQ(f["inputs"]["iterations"], 12);
+    EXPECT_EQ(f["inputs"]["bailout"], 100.0);   // the larger of the formulas' own
+    const auto& body = f["formula"];
+    ASSERT_EQ(body["groups"].size(), 2u);
+    EXPECT_EQ(body["groups"][0]["name"], "slot1_mandelbox");
+    EXPECT_EQ(body["groups"][1]["name"], "slot2_mandelbulb");
+    EXPECT_EQ(body["schedule"], ordered_json::parse(R"([{"group": "slot1_mandelbox", "count": 2}, {"group": "slot2_mandelbulb", "count": 1}])"));
+    EXPECT_TRUE(body["repeat"].get<bool>());
+    EXPECT_EQ(body["groups"][0]["nodes"][2]["inputs"]["scale"], -1.5);
+    EXPECT_EQ(body["groups"][0]["nodes"][3]["id"], "s1_add");
+    EXPECT_EQ(body["groups"][0]["nodes"][3]["inputs"]["weight"], 0.9);
+    EXPECT_EQ(body["groups"][1]["nodes"][0]["type"], "stage.triplex_power_elevation");
+    Diagnostics compile;
+    EXPECT_TRUE(test::compile_text(g->dump(), compile)) << compile.format();
+}
+
+TEST(MandelbulberImport, what_changes_the_shape_and_is_not_imported_is_an_error_naming_its_line) {
+    struct Case {
+        std::string settings, message;
+    };
+    const Case cases[] = {
+        {"formula_1 10;\n", "line 4: formula_1 10: this formula is not imported (imported: 2 mandelbulb, 7 menger_sponge, 8 mandelbox)"},
+        {"formula_1 8;\n[fractal_1]\nmandelbox_rotations_enabled true;\n",
+         "line 6: [fractal_1] mandelbox_rotations_enabled: formula 8 (mandelbox): mandelbox_rotations_enabled true is not imported"},
+        {"formula_1 2;\nboolean_operators true;\n", "line 5: boolean_operators: true is not imported"},
+        {"formula_1 2;\nprimitive_box_1_enabled true;\n", "line 5: primitive_box_1_enabled: primitive shapes are not imported"},
+        {"formula_1 2;\nfractal_constant_factor 1 0 1;\n", "c scaled unevenly"},
+        {"hybrid_fractal_enable true;\nformula_1 2;\nrepeat_from 2;\n", "line 6: repeat_from: 2 is not imported"},
+        {"formula_1 2;\nN many;\n", "line 5: N: 'many' is not a number"},
+    };
+    for (const auto& c : cases) {
+        Diagnostics diag;
+        EXPECT_FALSE(import_text(std::string(kHeader) + c.settings, diag)) << c.settings;
+        EXPECT_TRUE(said(diag, Severity::Error, c.message)) << c.settings << "\n" << diag.format();
+    }
+}
+
+TEST(MandelbulberImport, the_look_is_named_in_a_warning_and_limits_cut_the_shape_with_a_box) {
+    Diagnostics diag;
+    auto g = import_text(std::string(kHeader) +
+                             "formula_1 8;\nglow_intensity 0,5;\nambient_occlusion_enabled true;\nlimits_enabled true;\n"
+                             "limit_min -1 -2 -3;\nlimit_max 1 2 3;\ndetail_level 2;\n",
+                         diag);
+    ASSERT_TRUE(g) << diag.format();
+    EXPECT_TRUE(said(diag, Severity::Warning, "2 settings of the look are not imported")) << diag.format();
+    EXPECT_TRUE(said(diag, Severity::Warning, "glow_intensity")) << diag.format();
+    EXPECT_TRUE(said(diag, Severity::Warning, "fgplay --detail 2")) << diag.format();
+    EXPECT_EQ((*g)["outputs"]["distance"], "cut.distance");
+    const auto& box = (*g)["nodes"][7];
+    EXPECT_EQ(box["type"], "prim.box");
+    EXPECT_EQ(box["inputs"]["size"], ordered_json({1.0, 3.0, 2.0}));   // z up there is y up here
+    Diagnostics compile;
+    EXPECT_TRUE(test::compile_text(g->dump(), compile)) << compile.format();
+}
