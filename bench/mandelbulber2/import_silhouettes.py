@@ -20,6 +20,11 @@ import numpy
 from PIL import Image
 
 EXAMPLES = "/usr/share/mandelbulber2/examples"
+# The effects that change the look and not the silhouette, off for Mandelbulber2's render (time).
+LOOK_OFF = "#".join(f"{k}=false" for k in (
+    "ambient_occlusion_enabled", "DOF_enabled", "shadows_enabled", "raytraced_reflections", "volumetric_fog_enabled",
+    "glow_enabled", "iteration_fog_enable", "main_light_volumetric_enabled", "fake_lights_enabled", "basic_fog_enabled",
+    "DOF_monte_carlo", "antialiasing_enabled"))
 
 
 def run(argv, **kw):
@@ -59,8 +64,12 @@ def silhouettes(build, out, scenes, size):
         name = os.path.splitext(os.path.basename(scene))[0]
         with tempfile.TemporaryDirectory() as work:
             mb = os.path.join(work, "mb.png")
-            r = run(["mandelbulber2", "-n", "-r", f"{size}x{size}", "-f", "png16alpha", "-o", mb, scene],
-                    env={**os.environ, "HOME": home}, timeout=600)
+            try:
+                r = run(["mandelbulber2", "-n", "-r", f"{size}x{size}", "-f", "png16alpha", "-O", LOOK_OFF, "-o", mb, scene],
+                        env={**os.environ, "HOME": home}, timeout=300)
+            except subprocess.TimeoutExpired:
+                print(f"{name}: skipped (Mandelbulber2 took over 5 minutes)")
+                continue
             graph, pack = os.path.join(work, "scene.json"), os.path.join(work, "scene.fgpack")
             imp = run([f"{build}/compiler/fgc", "import", scene, "-o", graph])
             if r.returncode or not os.path.exists(mb) or imp.returncode:

@@ -20,10 +20,11 @@ constexpr int kSlots = 9;   // Mandelbulber's formula slots, [fractal_1] to [fra
 // Mandelbulber's z is up, the graph's y: (x, y, z) there is (x, z, -y) here (both right-handed).
 json to_graph(const glm::dvec3& v) { return json::array({v.x, v.z, -v.y}); }
 
-// Mandelbulber 2.10 and older (legacy_coordinate_system) rendered in left-handed axes: its picture
-// is the mirror of the right-handed one. The mirrored world, y -> -y, gives it back; every imported
-// formula is symmetric under that mirror (the bulb's phi -> -phi, the folds'), so only the camera
-// and a Julia constant move.
+// Mandelbulber 2.10 and older (legacy_coordinate_system) drew with the picture's vertical axis
+// reversed: what the same numbers give now, flipped top to bottom (measured against its renders).
+// That flip is the world mirrored in y, y -> -y, seen with the camera's top reversed; every
+// imported formula is symmetric under the mirror (the bulb's phi -> -phi, the folds'), so only the
+// camera and a Julia constant move.
 glm::dvec3 mirror_y(glm::dvec3 v) { return {v.x, -v.y, v.z}; }
 
 // Main settings that change the shape and are imported only at the value that leaves it alone.
@@ -206,7 +207,8 @@ private:
 
     json camera() {
         const glm::dvec3 position = world(vector("camera", {3.0, -6.0, 2.0})), target = world(vector("target", glm::dvec3(0.0)));
-        const glm::dvec3 top = world(vector("camera_top", {-0.1277753, 0.2555506, 0.958314}));
+        glm::dvec3 top = world(vector("camera_top", {-0.1277753, 0.2555506, 0.958314}));
+        if (flag("legacy_coordinate_system", false)) top = -top;
         const double fov = number("fov", 1.0);
         const double degrees = 2.0 * std::atan(0.5 * fov) * 180.0 / 3.14159265358979323846;
         if (degrees < 10.0 || degrees > 170.0)

@@ -59,11 +59,13 @@ TEST(MandelbulberImport, the_camera_turns_z_up_into_y_up_and_the_fov_into_degree
     // Three-point perspective: fov is 2 tan(angle / 2).
     EXPECT_NEAR(cam["fov_deg"].get<double>(), 2.0 * std::atan(0.25) * 180.0 / M_PI, 1e-9);
 
-    // Mandelbulber 2.10 and older: left-handed, so the camera mirrors in y.
+    // Mandelbulber 2.10 and older drew the picture flipped top to bottom: the world mirrored in y,
+    // seen with the camera's top reversed.
     Diagnostics legacy;
-    auto l = import_text(std::string(kHeader) + "legacy_coordinate_system true;\ncamera 3 -6 2;\nformula_1 8;\n", legacy);
+    auto l = import_text(std::string(kHeader) + "legacy_coordinate_system true;\ncamera 3 -6 2;\ncamera_top 0 0,6 0,8;\nformula_1 8;\n", legacy);
     ASSERT_TRUE(l) << legacy.format();
     EXPECT_EQ((*l)["scene"]["camera"]["position"], ordered_json({3.0, 2.0, -6.0}));
+    EXPECT_EQ((*l)["scene"]["camera"]["up"], ordered_json({-0.0, -0.8, -0.6}));
 }
 
 TEST(MandelbulberImport, a_hybrid_runs_its_slots_in_order_for_their_counts_over_and_over_and_compiles) {
