@@ -71,7 +71,7 @@ std::optional<ImportedFormula> mandelbulb(int slot, const AddC& c, const FractSe
     if (!r.ok()) return std::nullopt;
     json nodes = json::array({stage("power", "stage.triplex_power_elevation", {{"power", power}})});
     add_c(nodes, "power", c);
-    return ImportedFormula{"mandelbulb", nodes, 10.0};
+    return ImportedFormula{"mandelbulb", nodes, 10.0, "log"};
 }
 
 // Formula 8: box fold, sphere fold, scale, + c.
@@ -95,14 +95,16 @@ std::optional<ImportedFormula> mandelbox(int slot, const AddC& c, const FractSet
                               stage("sphere", "stage.sphere_fold", {{"z", "fold"}, {"min_radius", min_radius}, {"fixed_radius", fixed_radius}}),
                               stage("scale", "stage.scale", {{"z", "sphere"}, {"scale", scale}})});
     add_c(nodes, "scale", c);
-    return ImportedFormula{"mandelbox", nodes, 100.0};
+    return ImportedFormula{"mandelbox", nodes, 100.0, "linear"};
 }
 
-// Formula 7: |z|, sort the coordinates, scale by 3 about the corner (1, 1, 1).
+// Formula 7: |z|, sort the coordinates, scale by 3 about the corner (1, 1, 1); the distance to the
+// unit cube over the running derivative (its render has the cube's sharp corners).
 std::optional<ImportedFormula> menger(int, const AddC&, const FractSettings&, Diagnostics&) {
     return ImportedFormula{"menger_sponge", json::array({stage("abs", "stage.abs_fold"),
                                                         stage("sort", "stage.menger_fold", {{"z", "abs"}}),
-                                                        stage("scale", "stage.menger_scale", {{"z", "sort"}, {"scale", 3.0}, {"offset", {1.0, 1.0, 1.0}}})}), 10.0};
+                                                        stage("scale", "stage.menger_scale", {{"z", "sort"}, {"scale", 3.0}, {"offset", {1.0, 1.0, 1.0}}})}),
+                           10.0, "box"};
 }
 
 using Importer = std::optional<ImportedFormula> (*)(int, const AddC&, const FractSettings&, Diagnostics&);

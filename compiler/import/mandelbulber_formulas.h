@@ -16,6 +16,7 @@ struct ImportedFormula {
     std::string name;         // "mandelbox"
     nlohmann::ordered_json nodes;   // the group's stage nodes, the last one's z leaving the group
     double bailout = 100.0;   // the formula's default bailout in Mandelbulber
+    std::string estimate;     // its distance estimate: "log", "linear" (|z| / dr) or "box" (the cube's)
 };
 
 // How the slot adds c: its weight (Mandelbulber's fractal_constant_factor when uniform), or not at

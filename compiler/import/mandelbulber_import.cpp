@@ -132,7 +132,12 @@ public:
         if (diag_.has_errors()) return std::nullopt;
         warn_looks();
         if (iterations > 256) diag_.warning(fmt::format("N {}: imported as 256 iterations, the formula node's most", iterations));
-        if (step < 1.0) scene["step_factor"] = std::max(step, 0.05);
+        // Mandelbulber's DE_factor shortens its steps only; the graph's step_factor also scales the
+        // distance its hit test reads, which would fatten the surface (a Menger scene at 0.1 came
+        // out ten pixels wider). The march's safety is the compiler's bias and Lipschitz bound.
+        if (step != 1.0)
+            diag_.warning(fmt::format("DE_factor {:g}: not imported; the step is made safe by the formula's bias (fgc calibrate "
+                                      "measures it)", step));
         if (detail != 1.0)
             diag_.warning(fmt::format("detail_level {:g}: the hit threshold is the renderer's; render with fgplay --detail {:g}", detail, detail));
         json nodes = json::array({
@@ -184,6 +189,8 @@ private:
             schedule.push_back({{"group", group}, {"count", std::max(count, 1)}});
             names.push_back(count > 1 ? fmt::format("{} x{}", f->name, count) : f->name);
             bailout_ = std::max(bailout_, f->bailout);
+            // A power map's logarithmic estimate wins in a hybrid; else the first formula's.
+            if (estimate_.empty() || f->estimate == "log") estimate_ = f->estimate;
         }
         if (!flag("use_default_bailout", true)) bailout_ = number("bailout", 100.0);
         if (hybrid) {
@@ -194,7 +201,7 @@ private:
             description_ = "the " + names.front();
         }
         if (groups.empty() && !diag_.has_errors()) diag_.error("no formula enabled in any slot");
-        json body{{"groups", groups}};
+        json body{{"groups", groups}, {"estimate", estimate_}};
         if (hybrid) {
             body["schedule"] = schedule;
             body["repeat"] = true;
@@ -231,7 +238,7 @@ private:
     const FractSettings& s_;
     Diagnostics& diag_;
     double bailout_ = 0.0;
-    std::string description_;
+    std::string description_, estimate_;
 };
 
 }  // namespace
