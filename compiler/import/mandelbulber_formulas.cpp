@@ -74,6 +74,15 @@ std::optional<ImportedFormula> mandelbulb(int slot, const AddC& c, const FractSe
     return ImportedFormula{"mandelbulb", nodes, 10.0, "log"};
 }
 
+// Formula 3: the power-2 bulb, ((x^2 - y^2)(1 - z^2 / rho^2), 2xy(1 - z^2 / rho^2), 2 z rho) + c with
+// rho^2 = x^2 + y^2: the elevation-angle power of 2, written out (the sign of its z term mirrors the
+// set in z, under which it is symmetric).
+std::optional<ImportedFormula> mandelbulb_power2(int, const AddC& c, const FractSettings&, Diagnostics&) {
+    json nodes = json::array({stage("power", "stage.triplex_power_elevation", {{"power", 2.0}})});
+    add_c(nodes, "power", c);
+    return ImportedFormula{"mandelbulb_power2", nodes, 10.0, "log"};
+}
+
 // Formula 8: box fold, sphere fold, scale, + c.
 std::optional<ImportedFormula> mandelbox(int slot, const AddC& c, const FractSettings& s, Diagnostics& diag) {
     SlotReader r(8, "mandelbox", slot, s, diag);
@@ -119,7 +128,8 @@ void prefix_ids(json& nodes, const std::string& prefix) {
 }
 const std::map<int, std::pair<const char*, Importer>>& importers() {
     static const std::map<int, std::pair<const char*, Importer>> table{
-        {2, {"mandelbulb", mandelbulb}}, {7, {"menger_sponge", menger}}, {8, {"mandelbox", mandelbox}}};
+        {2, {"mandelbulb", mandelbulb}}, {3, {"mandelbulb_power2", mandelbulb_power2}}, {7, {"menger_sponge", menger}},
+        {8, {"mandelbox", mandelbox}}};
     return table;
 }
 

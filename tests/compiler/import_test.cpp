@@ -98,7 +98,7 @@ TEST(MandelbulberImport, what_changes_the_shape_and_is_not_imported_is_an_error_
         std::string settings, message;
     };
     const Case cases[] = {
-        {"formula_1 10;\n", "line 4: formula_1 10: this formula is not imported (imported: 2 mandelbulb, 7 menger_sponge, 8 mandelbox)"},
+        {"formula_1 10;\n", "line 4: formula_1 10: this formula is not imported (imported: 2 mandelbulb, 3 mandelbulb_power2, 7 menger_sponge, 8 mandelbox)"},
         {"formula_1 8;\n[fractal_1]\nmandelbox_rotations_enabled true;\n",
          "line 6: [fractal_1] mandelbox_rotations_enabled: formula 8 (mandelbox): mandelbox_rotations_enabled true is not imported"},
         {"formula_1 2;\nboolean_operators true;\n", "line 5: boolean_operators: true is not imported"},
