@@ -83,31 +83,19 @@ class Importer {
 public:
     Importer(const FractSettings& s, Diagnostics& diag) : s_(s), diag_(diag) {}
 
-    std::string text(const std::string& key, const std::string& fallback) const {
-        const FractValue* v = s_.find(key);
-        return v ? v->text : fallback;
-    }
-    double number(const std::string& key, double fallback) {
-        const FractValue* v = s_.find(key);
-        if (!v) return fallback;
-        if (auto x = fract_number(v->text)) return *x;
-        error(*v, key, fmt::format("'{}' is not a number", v->text));
-        return fallback;
-    }
-    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) {
+    // A value of [main_parameters] read by `parse`, or the fallback when it is absent; an error
+    // naming the line when it is not `kind`.
+    template <typename T>
+    T read(const std::string& key, T fallback, std::optional<T> (*parse)(const std::string&), const char* kind) {
         const FractValue* v = s_.find(key);
         if (!v) return fallback;
-        if (auto x = fract_vector(v->text)) return *x;
-        error(*v, key, fmt::format("'{}' is not three numbers", v->text));
+        if (auto x = parse(v->text)) return *x;
+        error(*v, key, fmt::format("'{}' is not {}", v->text, kind));
         return fallback;
     }
-    bool flag(const std::string& key, bool fallback) {
-        const FractValue* v = s_.find(key);
-        if (!v) return fallback;
-        if (auto x = fract_bool(v->text)) return *x;
-        error(*v, key, fmt::format("'{}' is not true or false", v->text));
-        return fallback;
-    }
+    double number(const std::string& key, double fallback) { return read(key, fallback, fract_number, "a number"); }
+    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) { return read(key, fallback, fract_vector, "three numbers"); }
+    bool flag(const std::string& key, bool fallback) { return read(key, fallback, fract_bool, "true or false"); }
     void error(const FractValue& v, const std::string& key, const std::string& why) {
         diag_.error(fmt::format("line {}: {}: {}", v.line, key, why));
     }
