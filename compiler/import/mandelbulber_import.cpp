@@ -54,8 +54,6 @@ std::vector<ShapeSetting> shape_settings() {
         out.push_back({fmt::format("formula_rotation_{}", i), vector(0.0), "a rotated formula"});
         out.push_back({fmt::format("formula_repeat_{}", i), vector(0.0), "a repeated formula"});
         out.push_back({fmt::format("formula_scale_{}", i), number(1.0), "a scaled formula"});
-        out.push_back({fmt::format("formula_start_iteration_{}", i), number(0.0), "a formula starting at a later iteration"});
-        out.push_back({fmt::format("formula_stop_iteration_{}", i), number(250.0), "a formula stopping at an iteration"});
         out.push_back({fmt::format("check_for_bailout_{}", i), text("true"), "a formula that skips the bailout test"});
         out.push_back({fmt::format("formula_weight_{}", i), number(1.0), "a weighted formula"});
     }
@@ -72,7 +70,8 @@ const std::set<std::string>& read_settings() {
                                 // Derived from camera and target, or the image's own size.
                                 "camera_rotation", "camera_distance_to_target", "image_width", "image_height"};
         for (int i = 1; i <= kSlots; ++i)
-            for (const char* base : {"formula_", "formula_iterations_", "fractal_enable_", "dont_add_c_constant_"})
+            for (const char* base : {"formula_", "formula_iterations_", "fractal_enable_", "dont_add_c_constant_",
+                                     "formula_start_iteration_", "formula_stop_iteration_"})
                 k.insert(fmt::format("{}{}", base, i));
         return k;
     }();
@@ -161,10 +160,19 @@ public:
 private:
     // The formula, or the hybrid: every enabled slot in order, each for its iteration count, over
     // and over.
+    // One slot of the sequence: its group, how many iterations in a row, and the iterations it
+    // may act on (Mandelbulber skips it outside them: the iteration leaves z as it is).
+    struct Slot {
+        std::string group;
+        int count = 1, start = 0, stop = 0;
+    };
+
     json formula_body() {
         const bool hybrid = flag("hybrid_fractal_enable", false);
-        json groups = json::array(), schedule = json::array();
+        const int iterations = static_cast<int>(std::lround(number("N", 250.0)));
+        json groups = json::array();
         std::vector<std::string> names;
+        std::vector<Slot> slots;
         for (int slot = 1; slot <= (hybrid ? kSlots : 1); ++slot) {
             const int number = static_cast<int>(std::lround(this->number(fmt::format("formula_{}", slot), slot == 1 ? 2.0 : 0.0)));
             if (number == 0 || !flag(fmt::format("fractal_enable_{}", slot), true)) continue;
@@ -173,9 +181,12 @@ private:
             if (!f) continue;
             const std::string group = fmt::format("slot{}_{}", slot, f->name);
             groups.push_back({{"name", group}, {"nodes", f->nodes}});
-            const int count = static_cast<int>(std::lround(this->number(fmt::format("formula_iterations_{}", slot), 1.0)));
-            schedule.push_back({{"group", group}, {"count", std::max(count, 1)}});
-            names.push_back(count > 1 ? fmt::format("{} x{}", f->name, count) : f->name);
+            auto integer = [&](const char* base, double fallback) {
+                return static_cast<int>(std::lround(this->number(fmt::format("{}{}", base, slot), fallback)));
+            };
+            slots.push_back({group, hybrid ? std::max(integer("formula_iterations_", 1.0), 1) : 1,
+                             integer("formula_start_iteration_", 0.0), integer("formula_stop_iteration_", 250.0)});
+            names.push_back(slots.back().count > 1 ? fmt::format("{} x{}", f->name, slots.back().count) : f->name);
             bailout_ = std::max(bailout_, f->bailout);
             // A power map's logarithmic estimate wins in a hybrid; else the first formula's.
             if (estimate_.empty() || f->estimate == "log") estimate_ = f->estimate;
@@ -190,14 +201,53 @@ private:
         }
         if (groups.empty() && !diag_.has_errors()) diag_.error("no formula enabled in any slot");
         json body{{"groups", groups}, {"estimate", estimate_}};
-        if (hybrid) {
+        const bool windows = std::any_of(slots.begin(), slots.end(), [&](const Slot& s) { return s.start > 0 || s.stop < iterations - 1; });
+        if (windows && !slots.empty()) {
+            body["schedule"] = windowed_schedule(slots, iterations);
+        } else if (hybrid) {
+            json schedule = json::array();
+            for (const auto& slot : slots) schedule.push_back({{"group", slot.group}, {"count", slot.count}});
             body["schedule"] = schedule;
             body["repeat"] = true;
         }
         return body;
     }
 
-    // Mandelbulber's three-point perspective: fov is the tangent span of the view, 2 tan(angle / 2).
+    // The sequence written out iteration by iteration, each slot kept only inside its window, as
+    // runs of one group; the last run takes every iteration left.
+    json windowed_schedule(const std::vector<Slot>& slots, int iterations) {
+        std::vector<const Slot*> sequence;
+        for (const auto& slot : slots) sequence.insert(sequence.end(), static_cast<std::size_t>(slot.count), &slot);
+        json runs = json::array();
+        const Slot* last = nullptr;
+        int last_used = -1;
+        for (int i = 0; i < iterations; ++i) {
+            const Slot* slot = sequence[static_cast<std::size_t>(i) % sequence.size()];
+            if (i < slot->start || i > slot->stop) continue;
+            last_used = i;
+            if (slot == last) {
+                runs.back()["count"] = runs.back()["count"].get<int>() + 1;
+            } else {
+                runs.push_back({{"group", slot->group}, {"count", 1}});
+                last = slot;
+            }
+        }
+        if (runs.empty()) {
+            diag_.error("formula_start_iteration and formula_stop_iteration leave no iteration to any formula");
+            return runs;
+        }
+        constexpr std::size_t kMaxRuns = 16;
+        if (runs.size() > kMaxRuns) {
+            diag_.error(fmt::format("formula_start_iteration and formula_stop_iteration make the sequence {} runs of one formula; "
+                                    "at most {} are imported", runs.size(), kMaxRuns));
+            return runs;
+        }
+        // A last run that reaches the last iteration takes every iteration left (the node's
+        // iteration knob may give more or fewer than N).
+        if (last_used == iterations - 1) runs.back()["count"] = 0;
+        return runs;
+    }
+
     glm::dvec3 world(glm::dvec3 v) { return flag("legacy_coordinate_system", false) ? mirror_y(v) : v; }
 
     json camera() {

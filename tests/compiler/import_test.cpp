@@ -93,6 +93,27 @@ TEST(MandelbulberImport, a_hybrid_runs_its_slots_in_order_for_their_counts_over_
     EXPECT_TRUE(test::compile_text(g->dump(), compile)) << compile.format();
 }
 
+TEST(MandelbulberImport, iteration_windows_keep_each_slot_to_its_iterations) {
+    // The sequence 1 1 2 1 1 2 ..., slot 1 only up to iteration 3, slot 2 from iteration 2: 1 1 2 1
+    // (1) 2 (1 1) 2 ... with the skipped iterations leaving z alone; of N = 20, slot 2's last at 17.
+    Diagnostics diag;
+    auto g = import_text(std::string(kHeader) +
+                             "hybrid_fractal_enable true;\nformula_1 8;\nformula_2 7;\nformula_iterations_1 2;\nN 20;\n"
+                             "formula_stop_iteration_1 3;\nformula_start_iteration_2 2;\n",
+                         diag);
+    ASSERT_TRUE(g) << diag.format();
+    const auto& body = (*g)["nodes"][0]["formula"];
+    EXPECT_EQ(body["schedule"], ordered_json::parse(R"([{"group": "slot1_mandelbox", "count": 2}, {"group": "slot2_menger_sponge", "count": 1},
+                                                      {"group": "slot1_mandelbox", "count": 1}, {"group": "slot2_menger_sponge", "count": 5}])"))
+        << body.dump();
+    EXPECT_FALSE(body.contains("repeat"));
+
+    Diagnostics alternating;
+    EXPECT_FALSE(import_text(std::string(kHeader) + "hybrid_fractal_enable true;\nformula_1 8;\nformula_2 7;\nN 100;\n"
+                                                    "formula_start_iteration_1 1;\n", alternating));
+    EXPECT_TRUE(said(alternating, Severity::Error, "runs of one formula; at most 16 are imported")) << alternating.format();
+}
+
 TEST(MandelbulberImport, what_changes_the_shape_and_is_not_imported_is_an_error_naming_its_line) {
     struct Case {
         std::string settings, message;
