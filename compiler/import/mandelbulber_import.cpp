@@ -48,6 +48,11 @@ std::vector<ShapeSetting> shape_settings() {
         {"repeat", vector(0.0), "repetition of space"},
         {"interior_mode", text("false"), "the interior mode"},
         {"iteration_threshold_mode", text("false"), "the surface by iteration count"},
+        {"box_folding", text("false"), "a box fold before every formula"},
+        {"spherical_folding", text("false"), "a sphere fold before every formula"},
+        {"limit_outer_bounding", number(100.0), "a nearer outer bound"},
+        {"initial_waxis", number(0.0), "a four-dimensional start"},
+        {"minN", number(1.0), "a least iteration count"},
     };
     for (int i = 1; i <= kSlots; ++i) {
         out.push_back({fmt::format("formula_position_{}", i), vector(0.0), "a moved formula"});
@@ -66,7 +71,7 @@ const std::set<std::string>& read_settings() {
         std::set<std::string> k{"camera", "target", "camera_top", "fov", "N", "bailout", "use_default_bailout", "DE_factor",
                                 "detail_level", "julia_mode", "julia_c", "hybrid_fractal_enable", "repeat_from",
                                 "legacy_coordinate_system", "fractal_constant_factor", "limits_enabled", "limit_min",
-                                "limit_max",
+                                "limit_max", "view_distance_max",
                                 // Derived from camera and target, or the image's own size.
                                 "camera_rotation", "camera_distance_to_target", "image_width", "image_height"};
         for (int i = 1; i <= kSlots; ++i)
@@ -116,6 +121,7 @@ public:
             formula["julia"] = true;
         }
         const double step = number("DE_factor", 1.0), detail = number("detail_level", 1.0);
+        scene["max_distance"] = std::clamp(number("view_distance_max", 50.0), 1e-6, 1e9);
         if (diag_.has_errors()) return std::nullopt;
         warn_looks();
         if (iterations > 256) diag_.warning(fmt::format("N {}: imported as 256 iterations, the formula node's most", iterations));
