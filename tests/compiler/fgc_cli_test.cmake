@@ -1,5 +1,5 @@
 # fgc as a user runs it: a broken graph gives a non-zero exit, messages naming the node, and no pack;
-# a good graph gives a pack that `fgc info` reads back.
+# a good graph gives a pack that `fgc info` reads back; a Mandelbulber scene imports, or is refused by its line.
 include(${CMAKE_CURRENT_LIST_DIR}/../support/work_dir.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -29,5 +29,23 @@ file(WRITE ${WORK}/not_a_pack.fgpack "hello")
 execute_process(COMMAND ${FGC} info ${WORK}/not_a_pack.fgpack RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(rc EQUAL 0 OR NOT err MATCHES "byte 0: not a Fractograph pack")
   message(FATAL_ERROR "fgc info accepted a bad pack: ${err}")
+endif()
+# fgc import: a Mandelbulber hybrid becomes a graph fgc compiles; a formula it cannot map is an
+# error naming the line, and nothing is written.
+file(WRITE ${WORK}/hybrid.fract "# Mandelbulber settings file\n[main_parameters]\ncamera 3 -6 2;\nformula_1 8;\nformula_2 2;\n"
+     "hybrid_fractal_enable true;\nN 12;\nglow_intensity 0,5;\n[fractal_1]\nmandelbox_scale -1,5;\n")
+execute_process(COMMAND ${FGC} import ${WORK}/hybrid.fract -o ${WORK}/hybrid.json RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "wrote .*hybrid.json: .*the hybrid mandelbox, then mandelbulb, repeated"
+   OR NOT err MATCHES "settings of the look are not imported.*glow_intensity")
+  message(FATAL_ERROR "fgc import failed on a hybrid (${rc}): ${out}${err}")
+endif()
+execute_process(COMMAND ${FGC} compile ${WORK}/hybrid.json -o ${WORK}/hybrid.fgpack RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the imported hybrid does not compile: ${err}")
+endif()
+file(WRITE ${WORK}/kifs.fract "[main_parameters]\ncamera 3 -6 2;\nformula_1 10;\n")
+execute_process(COMMAND ${FGC} import ${WORK}/kifs.fract -o ${WORK}/kifs.json RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "kifs.fract: error: line 3: formula_1 10: this formula is not imported" OR EXISTS ${WORK}/kifs.json)
+  message(FATAL_ERROR "fgc import did not refuse formula 10 by its line (${rc}): ${err}")
 endif()
 fg_test_passed()
