@@ -11,7 +11,7 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 FUZZ=${FG_BUILD_DIR:-$ROOT/build}-fuzz
 JOBS=${FG_JOBS:-$(nproc)}
 SECONDS_EACH=${1:-600}
-FUZZERS=(fuzz_graph_loader fuzz_pack_reader fuzz_compiler)
+FUZZERS=(fuzz_graph_loader fuzz_pack_reader fuzz_compiler fuzz_mandelbulber_import)
 
 if [ ! -f "$FUZZ/build.ninja" ]; then
   # -O1 -g1, as the sanitizer build: libFuzzer's reports still name file and line, and it builds faster.
