@@ -15,11 +15,15 @@ FUZZERS=(fuzz_graph_loader fuzz_pack_reader fuzz_compiler fuzz_mandelbulber_impo
 
 if [ ! -f "$FUZZ/build.ninja" ]; then
   # -O1 -g1, as the sanitizer build: libFuzzer's reports still name file and line, and it builds faster.
-  CC=clang CXX=clang++ cmake -S "$ROOT" -B "$FUZZ" -G Ninja -DFG_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" >/dev/null
+  # ccache, as scripts/fractograph.sh builds: a clone on a machine that fuzzed before recompiles what changed.
+  launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  CCACHE_BASEDIR=$ROOT CCACHE_NOHASHDIR=1 CC=clang CXX=clang++ cmake -S "$ROOT" -B "$FUZZ" -G Ninja -DFG_FUZZ=ON \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" "${launcher[@]}" >/dev/null
 fi
 echo "building the fuzzers (log: $FUZZ/build.log)"
-cmake --build "$FUZZ" -j "$JOBS" >"$FUZZ/build.log" 2>&1 || { tail -60 "$FUZZ/build.log"; exit 1; }
+CCACHE_BASEDIR=$ROOT CCACHE_NOHASHDIR=1 cmake --build "$FUZZ" -j "$JOBS" >"$FUZZ/build.log" 2>&1 || { tail -60 "$FUZZ/build.log"; exit 1; }
 
 count() { find "$1" -type f 2>/dev/null | wc -l; }
 rows=()
