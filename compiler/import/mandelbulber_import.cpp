@@ -122,6 +122,9 @@ public:
         }
         const double step = number("DE_factor", 1.0), detail = number("detail_level", 1.0);
         scene["max_distance"] = std::clamp(number("view_distance_max", 50.0), 1e-6, 1e9);
+        // Mandelbulber bounds every fractal by a sphere of radius 100 about the origin
+        // (limit_outer_bounding); the graph's default of 4 would cut a scale-2 Mandelbox.
+        scene["bounds"] = {{"center", {0.0, 0.0, 0.0}}, {"radius", 100.0}};
         if (diag_.has_errors()) return std::nullopt;
         warn_looks();
         if (iterations > 256) diag_.warning(fmt::format("N {}: imported as 256 iterations, the formula node's most", iterations));
