@@ -58,6 +58,9 @@ TEST(MandelbulberImport, the_camera_turns_z_up_into_y_up_and_the_fov_into_degree
     EXPECT_EQ(cam["up"], ordered_json({0.0, 1.0, -0.0}));
     // Three-point perspective: fov is 2 tan(angle / 2).
     EXPECT_NEAR(cam["fov_deg"].get<double>(), 2.0 * std::atan(0.25) * 180.0 / M_PI, 1e-9);
+    // Mandelbulber's outer bound and its default view distance.
+    EXPECT_EQ((*g)["scene"]["bounds"]["radius"], 100.0);
+    EXPECT_EQ((*g)["scene"]["max_distance"], 50.0);
 
     // Mandelbulber 2.10 and older drew the picture flipped top to bottom: the world mirrored in y,
     // seen with the camera's top reversed.
