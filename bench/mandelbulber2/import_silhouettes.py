@@ -5,8 +5,9 @@ alpha, fgplay's depth) compared as intersection over union. With --coverage, fir
 example scene Mandelbulber2 ships and counts what imports and why the rest does not.
 
 usage: import_silhouettes.py BUILD OUT_DIR [--size 256] [--coverage] [SCENE.fract ...]
-Writes OUT_DIR/silhouettes.md (the table), OUT_DIR/silhouettes.png (per scene: Mandelbulber2's
-mask, fgplay's, their difference) and, with --coverage, OUT_DIR/coverage.md.
+Writes OUT_DIR/silhouettes.md (the table), OUT_DIR/silhouettes.png (per scene, three to a row in the
+table's order: Mandelbulber2's mask, fgplay's, their difference) and, with --coverage,
+OUT_DIR/coverage.md.
 """
 import argparse
 import collections
@@ -90,7 +91,18 @@ def silhouettes(build, out, scenes, size):
         for name, iou, a, b, what in rows:
             f.write(f"| {name} | {iou:.3f} | {100 * a:.1f} % | {100 * b:.1f} % | {what} |\n")
     if tiles:
-        Image.fromarray((numpy.concatenate(tiles, axis=0) * 255).astype(numpy.uint8)).save(os.path.join(out, "silhouettes.png"))
+        sheet(tiles).save(os.path.join(out, "silhouettes.png"))
+
+
+def sheet(tiles, across=3):
+    """The scenes' triplets (Mandelbulber2's mask, fgplay's, their difference) at half size,
+    `across` to a row, in the table's order."""
+    half = [Image.fromarray((t * 255).astype(numpy.uint8)).reduce(2) for t in tiles]
+    w, h = half[0].size
+    out = Image.new("L", (across * w + (across - 1) * 8, (len(half) + across - 1) // across * (h + 8) - 8), 128)
+    for i, tile in enumerate(half):
+        out.paste(tile, ((i % across) * (w + 8), (i // across) * (h + 8)))
+    return out
 
 
 def main():
