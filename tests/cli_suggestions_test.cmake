@@ -19,7 +19,7 @@ endfunction()
 expect_suggestion("^fgc: unknown command \"compil\"; did you mean \"compile\"\\?" ${FGC} compil ${WORK}/scene.json)
 expect_suggestion("^fgc compile: unknown option \"--emit-glls\"; did you mean \"--emit-glsl\"\\?"
                   ${FGC} compile ${WORK}/scene.json --emit-glls ${WORK}/glsl)
-expect_suggestion("^fgc: unknown command \"frobnicate\" \\(the commands: check, compile, info, nodes, probe, calibrate, export\\)"
+expect_suggestion("^fgc: unknown command \"frobnicate\" \\(the commands: check, compile, info, nodes, probe, import, calibrate, export\\)"
                   ${FGC} frobnicate)
 expect_suggestion("^fgplay: unknown command \"rendr\"; did you mean \"render\"\\?" ${FGPLAY} rendr ${WORK}/scene.fgpack)
 expect_suggestion("^fgplay render: unknown option \"--franes\"; did you mean \"--frames\"\\?"
