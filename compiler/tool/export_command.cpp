@@ -43,8 +43,8 @@ CLI::App* add_export_command(CLI::App& app, std::string& graph, ExportOptions& e
     export_cmd->add_option("--band", exp.half_width, "narrow band half-width in voxels (default 3)")->check(CLI::Range(1.0, 64.0));
     export_cmd->add_option("--adaptivity", exp.adaptivity, "mesh simplification, 0 (every voxel) to 1 (fewest triangles; default 0)")
         ->check(CLI::Range(0.0, 1.0));
-    export_cmd->add_option("--offset", exp.offset, "move the surface out by this distance (negative: in; default: 0, or half a "
-                                                   "voxel for a distance without inside)");
+    export_cmd->add_option("--offset", exp.offset, "move the whole surface out by this distance (negative: in; default 0), on top "
+                                                   "of the half voxel each part without an inside is taken at");
     export_cmd->add_flag("--colors", exp.colors, "PLY vertex colours from the graph's albedo");
     export_cmd->add_option("--param", exp.params, "set a parameter, NAME=VALUE (repeatable)");
     export_cmd->add_option("--threads", exp.threads, "CPU threads (default 2)")->check(CLI::Range(1, 1024));
