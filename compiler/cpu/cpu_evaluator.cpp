@@ -46,7 +46,7 @@ std::optional<CpuEvaluator> CpuEvaluator::create(const IrGraph& ir, Diagnostics&
         ev.slot_count_ += n.def->outputs.size();
     }
     for (const auto& p : ir.params) ev.params_.push_back(CpuValue::of(p.value));
-    ev.surface_offsets_.assign(ir.nodes.size(), 0.0);
+    ev.surface_moves_.assign(ir.nodes.size(), {-1, 0.0});
     std::vector<const IrInput*> all_roots;
     for (const auto& [name, in] : ir.outputs) {
         all_roots.push_back(&in);
@@ -97,13 +97,17 @@ bool CpuEvaluator::set_knob(const std::string& spec_name, double value) {
 
 namespace {
 int distance_port(const IrNode& n) {
-    for (std::size_t i = 0; i < n.def->outputs.size(); ++i)
-        if (n.def->outputs[i].name == "distance") return static_cast<int>(i);
-    return -1;
+    const PortDefinition* port = n.def->find_output("distance");
+    return port ? static_cast<int>(port - n.def->outputs.data()) : -1;
 }
 }  // namespace
 
-void CpuEvaluator::move_surface(int node, double offset) { surface_offsets_.at(static_cast<std::size_t>(node)) = offset; }
+bool CpuEvaluator::move_surface(int node, double offset) {
+    const int port = distance_port(ir_->nodes.at(static_cast<std::size_t>(node)));
+    if (port < 0) return false;
+    surface_moves_[static_cast<std::size_t>(node)] = {port, offset};
+    return true;
+}
 
 CpuEvaluator CpuEvaluator::part(int node) const {
     CpuEvaluator copy = *this;
@@ -159,8 +163,7 @@ void CpuEvaluator::run(const Plan& plan, std::vector<CpuValue>& slots, const glm
         CpuValue* out = &slots[slot_offset_[static_cast<std::size_t>(idx)]];
         if (const auto& formula = formulas_[static_cast<std::size_t>(idx)]) formula->run(args, out);
         else functions_[static_cast<std::size_t>(idx)](args, out);
-        if (const double offset = surface_offsets_[static_cast<std::size_t>(idx)]; offset != 0.0)
-            out[distance_port(n)].v.x -= offset;
+        if (const auto& [port, offset] = surface_moves_[static_cast<std::size_t>(idx)]; port >= 0) out[port].v.x -= offset;
     }
 }
 

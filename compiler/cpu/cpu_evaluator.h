@@ -42,8 +42,8 @@ public:
     bool set_knob(const std::string& spec_name, double value);
     void set_time(double seconds) { time_ = seconds; }
     // Moves one node's distance output out by `offset` before anything reads it (the export's
-    // surface rule for a part whose estimate has no inside).
-    void move_surface(int node, double offset);
+    // surface rule for a part whose estimate has no inside); false when it has no distance output.
+    bool move_surface(int node, double offset);
     // A copy whose distance() is this node's own distance output: one part of the scene alone.
     CpuEvaluator part(int node) const;
 
@@ -80,7 +80,7 @@ private:
     std::size_t slot_count_ = 0;
     std::vector<CpuValue> params_;
     std::map<std::pair<int, int>, double> knobs_;  // (node, input) -> value override
-    std::vector<double> surface_offsets_;          // per node, subtracted from its distance output
+    std::vector<std::pair<int, double>> surface_moves_;   // per node: its distance port (-1: none) and offset
     IrInput distance_root_;
     double time_ = 0.0;
     Plan distance_plan_, all_plan_, unshaded_plan_;

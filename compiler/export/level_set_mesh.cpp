@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <thread>
 #include <numeric>
+#include <thread>
 #include <tuple>
 
 #include <openvdb/tools/Interpolation.h>
@@ -101,10 +101,6 @@ void colour_vertices(TriangleMesh& mesh, const std::function<ColourFunction()>& 
         });
     for (auto& w : workers) w.join();
 }
-
-}  // namespace fg
-
-namespace fg {
 
 void colour_by_albedo(TriangleMesh& mesh, const CpuEvaluator& scene, double scale, double voxel_size, int threads) {
     colour_vertices(mesh, [&]() -> ColourFunction {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "analysis/lipschitz_bound.h"
 #include "narrow_band_sampler.h"
 
 namespace fg {
@@ -13,10 +14,6 @@ bool reads_distance(const IrInput& in, const IrGraph& ir) {
     if (in.kind != IrInput::Kind::Node) return false;
     const auto& outputs = ir.nodes[static_cast<std::size_t>(in.node)].def->outputs;
     return outputs[static_cast<std::size_t>(in.port)].name == "distance";
-}
-
-bool has_distance_output(const IrNode& n) {
-    return std::any_of(n.def->outputs.begin(), n.def->outputs.end(), [](const auto& o) { return o.name == "distance"; });
 }
 
 // The nodes the scene's distance is computed from.
@@ -45,7 +42,7 @@ std::vector<ExportPart> export_parts(const CpuEvaluator& scene, double scale, co
     std::vector<ExportPart> parts;
     for (int i : distance_nodes(ir)) {
         const IrNode& n = ir.nodes[static_cast<std::size_t>(i)];
-        if (!has_distance_output(n) ||
+        if (!n.def->find_output("distance") ||
             std::any_of(n.inputs.begin(), n.inputs.end(), [&](const IrInput& in) { return reads_distance(in, ir); }))
             continue;
         NarrowBandStats stats;
@@ -60,6 +57,15 @@ CpuEvaluator with_surface_rules(CpuEvaluator scene, const std::vector<ExportPart
     for (const auto& part : parts)
         if (!part.has_inside()) scene.move_surface(part.node, offset / scale);
     return scene;
+}
+
+ExportField export_surface_field(const CpuEvaluator& scene, const ExportBox& box, double voxel_size, double offset,
+                                 int threads, std::vector<ExportPart>& parts, Diagnostics& diag) {
+    // The march steps d * step_factor / L; the same factor makes the estimate a distance that
+    // does not overestimate, which the narrow band's skipping relies on.
+    const double scale = scene.ir().scene.step_factor / analyse_lipschitz(scene.ir(), diag).bound;
+    parts = export_parts(scene, scale, box, voxel_size, threads);
+    return ExportField(with_surface_rules(scene, parts, scale, 0.5 * voxel_size), scale, offset, box);
 }
 
 }  // namespace fg

@@ -30,4 +30,10 @@ std::vector<ExportPart> export_parts(const CpuEvaluator& scene, double scale, co
 // field's units, after `scale`).
 CpuEvaluator with_surface_rules(CpuEvaluator scene, const std::vector<ExportPart>& parts, double scale, double offset);
 
+// What fgc export samples: the graph's estimate made a conservative distance (times its step
+// factor over its Lipschitz bound, as the march steps), each part by its rule at half a voxel,
+// then moved out by `offset` and cut by the box. `parts` receives the parts found.
+ExportField export_surface_field(const CpuEvaluator& scene, const ExportBox& box, double voxel_size, double offset,
+                                 int threads, std::vector<ExportPart>& parts, Diagnostics& diag);
+
 }  // namespace fg

@@ -203,9 +203,6 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     auto params = apply_params(*ir, *ev, o.params, diag);
     auto box = export_box(*ir, o.box, diag);
     if (!params || !box) return report(diag, graph);
-    // The march steps d * step_factor / L; the same factor makes the estimate a distance that
-    // does not overestimate, which the narrow band's skipping relies on.
-    const double scale = ir->scene.step_factor / analyse_lipschitz(*ir, diag).bound;
     const glm::dvec3 size = box->size();
     const double longest = std::max(size.x, std::max(size.y, size.z));
     settings.voxel_size = o.voxel_size > 0.0 ? o.voxel_size : longest / o.resolution;
@@ -216,9 +213,9 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
                                "coordinates", settings.voxel_size, farthest));
         return report(diag, graph);
     }
-    const auto parts = export_parts(*ev, scale, *box, settings.voxel_size, o.threads);
+    std::vector<ExportPart> parts;
+    ExportField field = export_surface_field(*ev, *box, settings.voxel_size, o.offset.value_or(0.0), o.threads, parts, diag);
     const double hit = 0.5 * settings.voxel_size;
-    ExportField field(with_surface_rules(*ev, parts, scale, hit), scale, o.offset.value_or(0.0), *box);
 
     const ExportEstimate e = estimate_export(field, settings, !o.meshes.empty());
     const std::uint64_t limit = o.max_memory ? o.max_memory : half_the_memory();
@@ -258,7 +255,7 @@ int export_level_set(const Common& c, const std::string& graph, const ExportOpti
     add_metadata(*grid, graph, *ir, *params, field, settings);
     if (!write_level_set(vdb, grid, diag)) return report(diag, graph);
     print_level_set(vdb, *grid);
-    return write_meshes(o, *grid, ev, scale, diag) ? 0 : report(diag, graph);
+    return write_meshes(o, *grid, ev, field.scale(), diag) ? 0 : report(diag, graph);
 }
 
 }  // namespace fg::fgc

@@ -12,7 +12,6 @@
 
 #include <openvdb/tools/Interpolation.h>
 
-#include "analysis/lipschitz_bound.h"
 #include "exr_parts.h"
 #include "export/level_set_mesh.h"
 #include "export/narrow_band_sampler.h"
@@ -82,19 +81,18 @@ TEST(ExportMatchesRender, a_bulb_and_box_union_keeps_both_shapes_where_the_rende
 
     // The export, as fgc export makes it at --resolution 128 with --colors.
     Diagnostics diag;
-    const double scale = cpu->ir.scene.step_factor / analyse_lipschitz(cpu->ir, diag).bound;
     const glm::dvec3 r(cpu->ir.scene.bounds_radius);
     const ExportBox box{cpu->ir.scene.bounds_center - r, cpu->ir.scene.bounds_center + r};
     NarrowBandSettings band;
     band.voxel_size = 2.0 * r.x / 128.0;
-    const auto parts = export_parts(*cpu->evaluator, scale, box, band.voxel_size, band.threads);
+    std::vector<ExportPart> parts;
+    const ExportField field = export_surface_field(*cpu->evaluator, box, band.voxel_size, 0.0, band.threads, parts, diag);
     ASSERT_EQ(parts.size(), 2u);
     for (const auto& part : parts) EXPECT_EQ(part.has_inside(), part.id == "bulb") << part.id << " " << part.inside_share;
-    const ExportField field(with_surface_rules(*cpu->evaluator, parts, scale, 0.5 * band.voxel_size), scale, 0.0, box);
     auto grid = sample_narrow_band(field, band);
     make_signed_band(*grid, band.half_width, band.threads);
     TriangleMesh mesh = mesh_level_set(*grid, 0.0);
-    colour_by_albedo(mesh, *cpu->evaluator, scale, band.voxel_size, band.threads);
+    colour_by_albedo(mesh, *cpu->evaluator, field.scale(), band.voxel_size, band.threads);
     ASSERT_FALSE(mesh.positions.empty());
 
     // The six views, 160x160 per eye (a pixel is 0.8 voxels across at the shape), as EXR files.
