@@ -4,7 +4,11 @@ Debian's package) and, imported, by fgplay, both SIZE x SIZE; the silhouettes (M
 alpha, fgplay's depth) compared as intersection over union. With --coverage, first imports every
 example scene Mandelbulber2 ships and counts what imports and why the rest does not.
 
-usage: import_silhouettes.py BUILD OUT_DIR [--size 256] [--coverage] [SCENE.fract ...]
+With --far D, both render the scene from Mandelbulber2's default view direction at distance D
+from the origin instead of the scene's camera: the whole shape against the sky, which tests the
+formula's conventions where a close camera fills the frame.
+
+usage: import_silhouettes.py BUILD OUT_DIR [--size 256] [--coverage] [--far D] [SCENE.fract ...]
 Writes OUT_DIR/silhouettes.md (the table), OUT_DIR/silhouettes.png (per scene, three to a row in the
 table's order: Mandelbulber2's mask, fgplay's, their difference) and, with --coverage,
 OUT_DIR/coverage.md.
@@ -58,12 +62,31 @@ def coverage(build, out):
     return imported
 
 
-def silhouettes(build, out, scenes, size):
+CAMERA_KEYS = ("camera", "target", "camera_top", "camera_rotation", "camera_distance_to_target", "fov", "perspective_type",
+               "view_distance_max", "legacy_coordinate_system")
+
+
+def far_view(scene, distance, path):
+    """The scene seen from Mandelbulber2's default direction, (3, -6, 2) / 7, at `distance` from
+    the origin (its default camera rotation looks along that line)."""
+    text = open(scene, encoding="latin-1").read()
+    text = re.sub(rf"^({'|'.join(CAMERA_KEYS)}) .*\n", "", text, flags=re.M)
+    s = distance / 7.0
+    camera = (f"camera {3 * s:.6f} {-6 * s:.6f} {2 * s:.6f};\ntarget 0 0 0;\ncamera_rotation 26.565 -16.60154 0;\n"
+              f"camera_distance_to_target {distance:.6f};\n")
+    with open(path, "w", encoding="latin-1") as f:
+        f.write(text.replace("[main_parameters]\n", "[main_parameters]\n" + camera, 1))
+    return path
+
+
+def silhouettes(build, out, scenes, size, far=None):
     rows, tiles = [], []
     home = tempfile.mkdtemp()   # Mandelbulber2 writes its settings folder into HOME
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
         with tempfile.TemporaryDirectory() as work:
+            if far:
+                scene = far_view(scene, far, os.path.join(work, "far.fract"))
             mb = os.path.join(work, "mb.png")
             try:
                 r = run(["mandelbulber2", "-n", "-r", f"{size}x{size}", "-f", "png16alpha", "-O", LOOK_OFF, "-o", mb, scene],
@@ -112,13 +135,14 @@ def main():
     p.add_argument("scenes", nargs="*")
     p.add_argument("--size", type=int, default=256)
     p.add_argument("--coverage", action="store_true")
+    p.add_argument("--far", type=float)
     a = p.parse_intermixed_args()
     os.makedirs(a.out, exist_ok=True)
     scenes = a.scenes
     if a.coverage:
         imported = coverage(a.build, a.out)
         scenes = scenes or imported
-    silhouettes(a.build, a.out, scenes, a.size)
+    silhouettes(a.build, a.out, scenes, a.size, a.far)
 
 
 if __name__ == "__main__":

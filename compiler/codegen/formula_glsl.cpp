@@ -38,6 +38,7 @@ std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, 
         std::string d;
         switch (s.def->derivative.rule) {
             case Rule::Conformal:
+            case Rule::Bound:
             case Rule::Power: d = fmt::format("fg_scale_dr({}, fz_s{}_{})", d_in, k, s.factor_output); break;
             case Rule::AddC:
                 d = prog.julia ? d_in : fmt::format("{} + abs({})", d_in, value(prog, s.args[static_cast<std::size_t>(s.weight_arg)]));
@@ -94,7 +95,11 @@ std::string formula_glsl(const FormulaProgram& prog) {
     out += "float fz_r = sqrt(fz_r2);\n";
     switch (prog.estimate) {
         // dr is 0 where a power map's gain is (a quaternion square at z = 0): the maxes keep both finite.
-        case FormulaProgram::Estimate::Linear: out += "distance = fz_r / max(fz_dr, FG_TINY);\n"; break;
+        case FormulaProgram::Estimate::Linear:
+            out += prog.linear_radius == 0.0 ? std::string("distance = fz_r / max(fz_dr, FG_TINY);\n")
+                                             : fmt::format("distance = (fz_r - {}) / max(fz_dr, FG_TINY);\n",
+                                                           Constant::scalar(ValueType::Float, prog.linear_radius).glsl());
+            break;
         case FormulaProgram::Estimate::Log:
             out += "distance = 0.5 * log(max(fz_r, FG_TINY)) * fz_r / max(fz_dr, FG_TINY);\n";
             break;
@@ -110,6 +115,9 @@ std::string formula_glsl(const FormulaProgram& prog) {
             out += "distance = fz_seed / max(fz_dr, FG_TINY);\n";
             break;
     }
+    // The set filled to the iteration count: what has not escaped by the last iteration is inside,
+    // whatever the estimate says of its last point.
+    if (prog.filled) out += "if (fz_r2 <= fz_bail2) distance = min(distance, 0.0);\n";
     if (prog.bound_radius > 0.0) {
         // Far away the estimate may grow faster than the true distance; the set lies in the bound's
         // ball, so beyond twice its radius the distance to the ball bounds it. A Julia set's ball

@@ -73,6 +73,7 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4
         double d_in = from < 0 ? dr : d[from];
         switch (s.def->derivative.rule) {
             case Rule::Conformal:
+            case Rule::Bound:
             case Rule::Power: d[k] = glsl::fg_scale_dr(d_in, outs[k][s.factor_output].f()); break;
             case Rule::AddC: d[k] = prog.julia ? d_in : d_in + std::abs(args[s.weight_arg].f()); break;
             default: d[k] = d_in; break;
@@ -106,7 +107,7 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
             }
     } while (prog.repeat && i < iterations && r2 <= bail2);
     const double r = std::sqrt(r2);
-    double distance = r / std::max(dr, kTiny);
+    double distance = (r - prog.linear_radius) / std::max(dr, kTiny);
     switch (prog.estimate) {
         case FormulaProgram::Estimate::Linear: break;
         case FormulaProgram::Estimate::Log: distance = 0.5 * std::log(std::max(r, kTiny)) * r / std::max(dr, kTiny); break;
@@ -123,6 +124,7 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
             break;
         }
     }
+    if (prog.filled && r2 <= bail2) distance = std::min(distance, 0.0);
     if (prog.bound_radius > 0.0) {
         const double ball = prog.julia ? std::max(prog.bound_radius, quaternion ? glm::length(in[kFormulaC].v4())
                                                                                  : glm::length(in[kFormulaC].v3()))

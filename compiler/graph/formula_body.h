@@ -32,6 +32,8 @@ struct FormulaBody {
     bool julia = false;                     // c is the node's input c, not the sample point
     std::string estimate;                   // "linear", "log", "box", "sheet", or "" (the compiler infers it)
     double sheet_radius = 100.0;            // "sheet": the radius of the seed disc
+    double linear_radius = 0.0;             // "linear": (|z| - this) / dr
+    bool filled = false;                    // a point whose orbit never escapes is inside (distance <= 0)
     double bound_radius = 0.0;              // the set lies in |p| <= this (0: unknown)
     std::string pointer;                    // /nodes/2/formula
 };

@@ -316,7 +316,7 @@ private:
     std::shared_ptr<const FormulaBody> read_formula(const json& fj, const std::string& ptr, const std::string& id) {
         JsonFieldReader fields = node_fields(id);
         if (!fields.is_object(fj, ptr)) return nullptr;
-        fields.unknown_keys(fj, ptr, {"groups", "schedule", "repeat", "julia", "estimate", "sheet_radius", "bound_radius", "comment"},
+        fields.unknown_keys(fj, ptr, {"groups", "schedule", "repeat", "julia", "estimate", "sheet_radius", "linear_radius", "filled", "bound_radius", "comment"},
                             "formula field");
         auto body = std::make_shared<FormulaBody>();
         body->pointer = ptr;
@@ -325,6 +325,8 @@ private:
         fields.optional(fj, "julia", ptr, body->julia);
         fields.optional(fj, "estimate", ptr, body->estimate, Choices{"linear", "log", "box", "sheet"});
         fields.optional(fj, "sheet_radius", ptr, body->sheet_radius, NumberRange{0.0});
+        fields.optional(fj, "linear_radius", ptr, body->linear_radius, NumberRange{0.0});
+        fields.optional(fj, "filled", ptr, body->filled);
         fields.optional(fj, "bound_radius", ptr, body->bound_radius, NumberRange{0.0});
         std::set<std::string> ids;  // node ids are unique across the body's groups
         if (const json* groups = fields.array_field(fj, "groups", ptr, true)) {

@@ -53,11 +53,13 @@ struct StageDerivative {
         None,       // not a stage
         Isometry,   // lengths kept (reflections, rotations, translations, folds of those): dr unchanged
         Conformal,  // locally a similarity: dr *= the output `factor` (exact)
+        Bound,      // not conformal: dr *= the output `factor`, the largest stretch of any direction (the
+                    // Jacobian's norm), so the scalar derivative stays an upper bound
         Power,      // not conformal: dr *= the output `factor`, the conventional scalar estimate the bias
                     // guards; a formula with such a stage uses the logarithmic distance estimate
         AddC,       // z + weight * c: dr += |input `weight`| when c is the sample point
     } rule = Rule::None;
-    std::string factor;   // Conformal, Power: the output holding the factor
+    std::string factor;   // Conformal, Bound, Power: the output holding the factor
     std::string weight;   // AddC: the input holding the weight
 };
 

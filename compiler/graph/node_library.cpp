@@ -27,10 +27,14 @@ void read_stage_derivative(const json& d, NodeDefinition& def, JsonFieldReader& 
     using Rule = StageDerivative::Rule;
     r.unknown_keys(d, "/derivative", {"rule", "factor", "weight"});
     std::string rule;
-    if (!r.required(d, "rule", "/derivative", rule, Choices{"isometry", "conformal", "power", "add_c"})) return;
+    if (!r.required(d, "rule", "/derivative", rule, Choices{"isometry", "conformal", "bound", "power", "add_c"})) return;
     auto& sd = def.derivative;
-    sd.rule = rule == "isometry" ? Rule::Isometry : rule == "conformal" ? Rule::Conformal : rule == "power" ? Rule::Power : Rule::AddC;
-    if (sd.rule == Rule::Conformal || sd.rule == Rule::Power) {
+    sd.rule = rule == "isometry"    ? Rule::Isometry
+              : rule == "conformal" ? Rule::Conformal
+              : rule == "bound"     ? Rule::Bound
+              : rule == "power"     ? Rule::Power
+                                    : Rule::AddC;
+    if (sd.rule == Rule::Conformal || sd.rule == Rule::Bound || sd.rule == Rule::Power) {
         if (r.required(d, "factor", "/derivative", sd.factor)) {
             const PortDefinition* out = def.find_output(sd.factor);
             if (!out || out->type.concrete != ValueType::Float)
@@ -132,7 +136,7 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
     }
     if (const json* d = r.object_field(j, "derivative", "")) read_stage_derivative(*d, *def, r);
     if (def->namespace_name() == "stage" && !def->is_stage())
-        r.error("a stage.* node declares its \"derivative\": {\"rule\": \"isometry\" | \"conformal\" | \"power\" | \"add_c\"}", "");
+        r.error("a stage.* node declares its \"derivative\": {\"rule\": \"isometry\" | \"conformal\" | \"bound\" | \"power\" | \"add_c\"}", "");
     if (const json* effects = r.array_field(j, "effects", ""))
         for (std::size_t i = 0; i < effects->size(); ++i) {
             std::string ptr = fmt::format("/effects/{}", i), name;

@@ -22,6 +22,7 @@ std::optional<FractSettings> FractSettings::parse(const std::string& text, Diagn
     std::string raw, section;
     for (int line = 1; std::getline(in, raw); ++line) {
         const std::string l = trim(raw);
+        if (l.starts_with("# version ")) s.version_ = fract_number(trim(l.substr(10))).value_or(s.version_);
         if (l.empty() || l[0] == '#') continue;
         if (l.front() == '[') {
             if (l.back() != ']') {

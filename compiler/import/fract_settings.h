@@ -27,12 +27,16 @@ public:
     using Section = std::map<std::string, FractValue>;
     const Section* section(const std::string& name) const;
     const std::map<std::string, Section>& sections() const { return sections_; }
+    // The Mandelbulber version that wrote the file ("# version 2.05"); older files mean some
+    // settings differently.
+    double version() const { return version_; }
 
     // A value of [main_parameters] (or of `section`), or nullptr.
     const FractValue* find(const std::string& name, const std::string& section = "main_parameters") const;
 
 private:
     std::map<std::string, Section> sections_;
+    double version_ = 2.20;
 };
 
 // Readers of a value's text; nullopt when it is not of that kind.

@@ -16,13 +16,20 @@ struct ImportedFormula {
     std::string name;         // "mandelbox"
     nlohmann::ordered_json nodes;   // the group's stage nodes, the last one's z leaving the group
     double bailout = 100.0;   // the formula's default bailout in Mandelbulber
-    std::string estimate;     // its distance estimate: "log", "linear" (|z| / dr) or "box" (the cube's)
+    std::string estimate;     // its distance estimate: "log", "linear" ((|z| - linear_radius) / dr) or "box"
+    double linear_radius = 0.0;
+    bool four_d = false;      // its orbit is 4D (quaternion-like), starting at (p, initial_waxis)
+    // Its stages and estimate are in Mandelbulber's axes, so the whole formula takes the point in
+    // them (the estimate of a pseudo-Kleinian singles out its z).
+    bool native_axes = false;
+    double sheet_radius = 0.0;   // estimate "sheet": the seed disc's radius
 };
 
-// How the slot adds c: its weight (Mandelbulber's fractal_constant_factor when uniform), or not at
-// all (dont_add_c_constant).
+// How the slot adds c: its weight (Mandelbulber's fractal_constant_factor when uniform), and the
+// slot's dont_add_c_constant. That setting turns c off for formulas that add it by default and
+// on for those that do not (Kaleidoscopic IFS).
 struct AddC {
-    bool enabled = true;
+    bool dont_add_c = false;
     double weight = 1.0;
 };
 

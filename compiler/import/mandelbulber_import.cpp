@@ -8,6 +8,7 @@
 #include <set>
 
 #include "mandelbulber_formulas.h"
+#include "mandelbulber_primitives.h"
 
 namespace fg {
 
@@ -27,6 +28,8 @@ json to_graph(const glm::dvec3& v) { return json::array({v.x, v.z, -v.y}); }
 // camera and a Julia constant move.
 glm::dvec3 mirror_y(glm::dvec3 v) { return {v.x, -v.y, v.z}; }
 
+bool is_equirectangular(const std::string& t) { return t == "equirectangular" || fract_number(t) == 2.0; }
+
 // Main settings that change the shape and are imported only at the value that leaves it alone.
 struct ShapeSetting {
     std::string key;
@@ -39,7 +42,8 @@ std::vector<ShapeSetting> shape_settings() {
     auto vector = [](double x) { return [x](const std::string& t) { return fract_vector(t) == glm::dvec3(x); }; };
     auto text = [](const char* v) { return [v](const std::string& t) { return t == v; }; };
     std::vector<ShapeSetting> out{
-        {"perspective_type", number(0.0), "only the three-point perspective is imported"},
+        {"perspective_type", [](const std::string& t) { return fract_number(t) == 0.0 || is_equirectangular(t); },
+         "only the three-point perspective and the equirectangular panorama are imported"},
         {"boolean_operators", text("false"), "boolean combinations of formulas"},
         {"fractal_constant_factor", [](const std::string& t) { auto v = fract_vector(t); return v && v->x == v->y && v->y == v->z; },
          "c scaled unevenly"},
@@ -47,11 +51,9 @@ std::vector<ShapeSetting> shape_settings() {
         {"fractal_rotation", vector(0.0), "a rotated fractal"},
         {"repeat", vector(0.0), "repetition of space"},
         {"interior_mode", text("false"), "the interior mode"},
-        {"iteration_threshold_mode", text("false"), "the surface by iteration count"},
         {"box_folding", text("false"), "a box fold before every formula"},
         {"spherical_folding", text("false"), "a sphere fold before every formula"},
         {"limit_outer_bounding", number(100.0), "a nearer outer bound"},
-        {"initial_waxis", number(0.0), "a four-dimensional start"},
         {"minN", number(1.0), "a least iteration count"},
     };
     for (int i = 1; i <= kSlots; ++i) {
@@ -59,7 +61,6 @@ std::vector<ShapeSetting> shape_settings() {
         out.push_back({fmt::format("formula_rotation_{}", i), vector(0.0), "a rotated formula"});
         out.push_back({fmt::format("formula_repeat_{}", i), vector(0.0), "a repeated formula"});
         out.push_back({fmt::format("formula_scale_{}", i), number(1.0), "a scaled formula"});
-        out.push_back({fmt::format("check_for_bailout_{}", i), text("true"), "a formula that skips the bailout test"});
         out.push_back({fmt::format("formula_weight_{}", i), number(1.0), "a weighted formula"});
     }
     return out;
@@ -71,12 +72,13 @@ const std::set<std::string>& read_settings() {
         std::set<std::string> k{"camera", "target", "camera_top", "fov", "N", "bailout", "use_default_bailout", "DE_factor",
                                 "detail_level", "julia_mode", "julia_c", "hybrid_fractal_enable", "repeat_from",
                                 "legacy_coordinate_system", "fractal_constant_factor", "limits_enabled", "limit_min",
-                                "limit_max", "view_distance_max",
+                                "limit_max", "view_distance_max", "linear_DE_offset", "initial_waxis", "iteration_threshold_mode", "perspective_type",
+                                "all_primitives_position", "all_primitives_rotation",
                                 // Derived from camera and target, or the image's own size.
                                 "camera_rotation", "camera_distance_to_target", "image_width", "image_height"};
         for (int i = 1; i <= kSlots; ++i)
             for (const char* base : {"formula_", "formula_iterations_", "fractal_enable_", "dont_add_c_constant_",
-                                     "formula_start_iteration_", "formula_stop_iteration_"})
+                                     "formula_start_iteration_", "formula_stop_iteration_", "check_for_bailout_"})
                 k.insert(fmt::format("{}{}", base, i));
         return k;
     }();
@@ -108,9 +110,6 @@ public:
         for (const auto& setting : shape_settings())
             if (const FractValue* v = s_.find(setting.key); v && !setting.neutral(v->text))
                 error(*v, setting.key, fmt::format("{} is not imported ({})", v->text, setting.what));
-        for (const auto& [key, value] : *s_.section("main_parameters"))
-            if (key.starts_with("primitive_") && key.ends_with("_enabled") && value.text == "true")
-                error(value, key, "primitive shapes are not imported");
         json formula = formula_body();
         json scene = camera();
         const int iterations = static_cast<int>(std::lround(number("N", 250.0)));
@@ -120,6 +119,7 @@ public:
             inputs["c"] = json::array({c[0], c[1], c[2], 0.0});
             formula["julia"] = true;
         }
+        if (four_d_ && number("initial_waxis", 0.0) != 0.0) inputs["w"] = number("initial_waxis", 0.0);
         const double step = number("DE_factor", 1.0), detail = number("detail_level", 1.0);
         scene["max_distance"] = std::clamp(number("view_distance_max", 50.0), 1e-6, 1e9);
         // Mandelbulber bounds every fractal by a sphere of radius 100 about the origin
@@ -134,6 +134,10 @@ public:
         if (step != 1.0)
             diag_.warning(fmt::format("DE_factor {:g}: not imported; the step is made safe by the formula's bias (fgc calibrate "
                                       "measures it)", step));
+        // A panorama is how fgplay renders, not part of the scene.
+        if (const FractValue* v = s_.find("perspective_type"); v && is_equirectangular(v->text))
+            diag_.warning(fmt::format("line {}: perspective_type {}: render the panorama with fgplay render --path PATH "
+                                      "--projection equirect (the graph's camera is a perspective one)", v->line, v->text));
         if (detail != 1.0)
             diag_.warning(fmt::format("detail_level {:g}: the hit threshold is the renderer's; render with fgplay --detail {:g}", detail, detail));
         json nodes = json::array({
@@ -144,6 +148,11 @@ public:
                                                                         {"c", {1.0, 1.0, 1.0}}, {"d", {0.0, 0.1, 0.2}}}}},
             {{"id", "light"}, {"type", "light.fake_diffuse"}, {"inputs", json::object()}},
             {{"id", "occlusion"}, {"type", "light.fake_ao"}, {"inputs", json::object()}}});
+        if (native_) {
+            // The formula runs in Mandelbulber's axes: it takes the point turned into them.
+            nodes.push_back({{"id", "z_up"}, {"type", "xform.rotate"}, {"inputs", {{"axis", {1.0, 0.0, 0.0}}, {"angle_deg", -90.0}}}});
+            nodes[0]["inputs"]["p"] = "z_up.p";
+        }
         std::string distance = "fractal.distance";
         if (flag("limits_enabled", false)) {
             // Cut by the box of limit_min and limit_max: the intersection with it.
@@ -156,6 +165,8 @@ public:
             nodes.push_back({{"id", "cut"}, {"type", "op.intersect"}, {"inputs", {{"a", "fractal.distance"}, {"b", "limits.distance"}}}});
             distance = "cut.distance";
         }
+        distance = import_primitives(s_, nodes, distance, diag_);
+        if (diag_.has_errors()) return std::nullopt;
         return json{
             {"format", "fractograph-graph"},
             {"version", 1},
@@ -185,7 +196,7 @@ private:
         for (int slot = 1; slot <= (hybrid ? kSlots : 1); ++slot) {
             const int number = static_cast<int>(std::lround(this->number(fmt::format("formula_{}", slot), slot == 1 ? 2.0 : 0.0)));
             if (number == 0 || !flag(fmt::format("fractal_enable_{}", slot), true)) continue;
-            const AddC c{!flag(fmt::format("dont_add_c_constant_{}", slot), false), vector("fractal_constant_factor", glm::dvec3(1.0)).x};
+            const AddC c{flag(fmt::format("dont_add_c_constant_{}", slot), false), vector("fractal_constant_factor", glm::dvec3(1.0)).x};
             auto f = import_formula(number, slot, c, s_, diag_);
             if (!f) continue;
             const std::string group = fmt::format("slot{}_{}", slot, f->name);
@@ -197,11 +208,19 @@ private:
                              integer("formula_start_iteration_", 0.0), integer("formula_stop_iteration_", 250.0)});
             names.push_back(slots.back().count > 1 ? fmt::format("{} x{}", f->name, slots.back().count) : f->name);
             bailout_ = std::max(bailout_, f->bailout);
+            (f->four_d ? four_d_ : three_d_) = true;
+            (f->native_axes ? native_ : graph_axes_) = true;
+            if (f->sheet_radius > 0.0) sheet_radius_ = f->sheet_radius;
             // A power map's logarithmic estimate wins in a hybrid; else the first formula's.
             if (estimate_.empty() || f->estimate == "log") estimate_ = f->estimate;
+            if (names.size() == 1) linear_radius_ = f->linear_radius;
         }
         if (!flag("use_default_bailout", true)) bailout_ = number("bailout", 100.0);
         if (hybrid) {
+            // A single formula always tests the bailout; in a hybrid a slot may skip the test after it.
+            for (int slot = 1; slot <= kSlots; ++slot)
+                if (const FractValue* v = s_.find(fmt::format("check_for_bailout_{}", slot)); v && v->text != "true")
+                    error(*v, fmt::format("check_for_bailout_{}", slot), fmt::format("{} is not imported (a formula that skips the bailout test)", v->text));
             if (const FractValue* v = s_.find("repeat_from"); v && fract_number(v->text) != 1.0)
                 error(*v, "repeat_from", fmt::format("{} is not imported (the hybrid repeats from its first formula)", v->text));
             description_ = "the hybrid " + fmt::format("{}", fmt::join(names, ", then ")) + ", repeated";
@@ -209,7 +228,17 @@ private:
             description_ = "the " + names.front();
         }
         if (groups.empty() && !diag_.has_errors()) diag_.error("no formula enabled in any slot");
+        if (four_d_ && three_d_) diag_.error("a hybrid of 3D and four-dimensional formulas is not imported (one orbit is 3D or 4D)");
+        if (native_ && graph_axes_) diag_.error("a pseudo-Kleinian in a hybrid with other formulas is not imported");
+        if (const FractValue* v = s_.find("initial_waxis"); v && !four_d_ && fract_number(v->text) != 0.0)
+            error(*v, "initial_waxis", fmt::format("{} is not imported (a four-dimensional start of a 3D formula)", v->text));
+        // A hybrid's linear estimate is (|z| - linear_DE_offset) / dr, whatever its formulas'.
+        if (hybrid) linear_radius_ = number("linear_DE_offset", 0.0);
         json body{{"groups", groups}, {"estimate", estimate_}};
+        if (estimate_ == "linear" && linear_radius_ != 0.0) body["linear_radius"] = linear_radius_;
+        if (estimate_ == "sheet") body["sheet_radius"] = sheet_radius_;
+        // The ray stops where the orbit stays within the bailout for all N iterations.
+        if (flag("iteration_threshold_mode", false)) body["filled"] = true;
         const bool windows = std::any_of(slots.begin(), slots.end(), [&](const Slot& s) { return s.start > 0 || s.stop < iterations - 1; });
         if (windows && !slots.empty()) {
             body["schedule"] = windowed_schedule(slots, iterations);
@@ -284,7 +313,9 @@ private:
 
     const FractSettings& s_;
     Diagnostics& diag_;
-    double bailout_ = 0.0;
+    double bailout_ = 0.0, linear_radius_ = 0.0;
+    bool four_d_ = false, three_d_ = false, native_ = false, graph_axes_ = false;
+    double sheet_radius_ = 1.0;
     std::string description_, estimate_;
 };
 

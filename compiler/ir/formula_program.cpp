@@ -38,6 +38,8 @@ public:
                          : body.estimate == "sheet"                                    ? Estimate::Sheet
                                                                                        : Estimate::Linear;
         prog->sheet_radius = body.sheet_radius;
+        prog->linear_radius = body.linear_radius;
+        prog->filled = body.filled;
         if (prog->orbit == ValueType::Vec4 && (prog->estimate == Estimate::Box || prog->estimate == Estimate::Sheet))
             diag_.error("the box and sheet estimates measure a 3D point; a quaternion formula uses \"linear\" or \"log\"",
                         body.pointer + "/estimate", node_id_);
@@ -171,6 +173,7 @@ std::string FormulaProgram::describe() const {
         for (const auto& s : g.stages) {
             const auto& d = s.def->derivative;
             if (d.rule == Rule::Conformal) e += fmt::format(" * {}({})", d.factor, s.id);
+            if (d.rule == Rule::Bound) e += fmt::format(" * {}({}) (norm bound)", d.factor, s.id);
             if (d.rule == Rule::Power) e += fmt::format(" * {}({}) (power map)", d.factor, s.id);
             if (d.rule == Rule::AddC && !julia) e = fmt::format("({} + |{}({})|)", e, d.weight, s.id);
         }
@@ -178,7 +181,10 @@ std::string FormulaProgram::describe() const {
     }
     const char* estimates[] = {"r / dr", "0.5 log(r) r / dr", "(distance of z to the unit cube) / dr",
                                "(distance of z to the seed disc) / dr"};
-    return text + fmt::format("; dr guarded by the bias each iteration; distance {}", estimates[static_cast<int>(estimate)]);
+    std::string distance = estimates[static_cast<int>(estimate)];
+    if (estimate == Estimate::Linear && linear_radius != 0.0) distance = fmt::format("(r - {:g}) / dr", linear_radius);
+    if (filled) distance += ", at most 0 where the orbit never escapes";
+    return text + fmt::format("; dr guarded by the bias each iteration; distance {}", distance);
 }
 
 std::vector<std::pair<const NodeDefinition*, std::optional<ValueType>>> FormulaProgram::stage_definitions() const {

@@ -61,12 +61,14 @@ struct FormulaProgram {
     bool julia = false;
     // The distance estimate: the last orbit point's distance to a seed shape, over dr.
     enum class Estimate {
-        Linear,  // |z| / dr: folding and IFS formulas
+        Linear,  // (|z| - linear_radius) / dr: folding and IFS formulas
         Log,     // 0.5 log|z| |z| / dr: power maps
         Box,     // the unit cube [-1, 1]^3: Menger-type IFS
         Sheet,   // Knighty's seed disc of radius sheet_radius in the plane z = 0: pseudo-Kleinian caves
     } estimate = Estimate::Linear;
     double sheet_radius = 100.0;
+    double linear_radius = 0.0;         // Linear: (|z| - this) / dr
+    bool filled = false;                // an orbit that never escapes: distance at most 0
     double bound_radius = 0.0;          // 0: none
     std::vector<std::string> params;    // the graph parameter behind each input from kFormulaFixedPorts on
 

@@ -196,6 +196,7 @@ std::string stage_rule_text(const NodeDefinition& d) {
     switch (d.derivative.rule) {
         case StageDerivative::Rule::Isometry: return "isometry (dr unchanged)";
         case StageDerivative::Rule::Conformal: return fmt::format("conformal (dr times output {})", d.derivative.factor);
+        case StageDerivative::Rule::Bound: return fmt::format("norm bound (dr times output {}, the largest stretch)", d.derivative.factor);
         case StageDerivative::Rule::Power: return fmt::format("power map (dr times output {}; log estimate)", d.derivative.factor);
         case StageDerivative::Rule::AddC: return fmt::format("add c (dr plus |{}| when c is the point)", d.derivative.weight);
         case StageDerivative::Rule::None: break;

@@ -120,6 +120,22 @@ TEST(Formula, every_stage_declares_a_derivative_a_finite_difference_confirms) {
                         << z.x << " " << z.y << " " << z.z << " k " << k;
                     break;
                 }
+                case Rule::Bound: {
+                    // A norm bound: no direction stretches more than the declared factor, and one does by it.
+                    double bound = out[static_cast<std::size_t>(call.factor_output())].f();
+                    double largest = 0.0;
+                    for (int a = 0; a < n; ++a) {
+                        glm::dvec4 e(0.0);
+                        e[a] = 1.0;
+                        largest = std::max(largest, glm::length(j * e));
+                    }
+                    for (int t = 0; t < 20; ++t) {
+                        glm::dvec4 v(u(rng), u(rng), u(rng), n == 4 ? u(rng) : 0.0);
+                        EXPECT_LE(glm::length(j * v), bound * glm::length(v) * (1.0 + 1e-6));
+                    }
+                    EXPECT_NEAR(largest / bound, 1.0, 1e-6) << "the bound is the largest stretch, not more";
+                    break;
+                }
                 case Rule::Power: {
                     // A power map: the declared gain is the radial stretch |J r^| (it is not conformal).
                     double gain = out[static_cast<std::size_t>(call.factor_output())].f();

@@ -122,11 +122,18 @@ TEST(MandelbulberImport, what_changes_the_shape_and_is_not_imported_is_an_error_
         std::string settings, message;
     };
     const Case cases[] = {
-        {"formula_1 10;\n", "line 4: formula_1 10: this formula is not imported (imported: 2 mandelbulb, 3 mandelbulb_power2, 7 menger_sponge, 8 mandelbox)"},
-        {"formula_1 8;\n[fractal_1]\nmandelbox_rotations_enabled true;\n",
-         "line 6: [fractal_1] mandelbox_rotations_enabled: formula 8 (mandelbox): mandelbox_rotations_enabled true is not imported"},
+        {"formula_1 19;\n", "line 4: formula_1 19: this formula is not imported (imported: 2 mandelbulb, 3 mandelbulb_power2, 4 hypercomplex"},
+        {"formula_1 8;\n[fractal_1]\nmandelbox_folding_value 3;\n",
+         "line 6: [fractal_1] mandelbox_folding_value: formula 8 (mandelbox): a fold to 3 - z beyond 1 is not a reflection"},
+        {"formula_1 10;\n[fractal_1]\nIFS_enabled_2 true;\nIFS_intensity_2 0,5;\n",
+         "line 7: [fractal_1] IFS_intensity_2: formula 10 (kaleidoscopic_ifs): a fold of intensity 0.5 is not a reflection"},
         {"formula_1 2;\nboolean_operators true;\n", "line 5: boolean_operators: true is not imported"},
-        {"formula_1 2;\nprimitive_box_1_enabled true;\n", "line 5: primitive_box_1_enabled: primitive shapes are not imported"},
+        {"formula_1 2;\nprimitive_water_1_enabled true;\n", "line 5: primitive_water_1_enabled: a water primitive is not imported"},
+        {"formula_1 2;\nprimitive_sphere_1_enabled true;\nprimitive_sphere_1_empty true;\n", "line 6: primitive_sphere_1_empty: true is not imported (a hollow primitive)"},
+        {"formula_1 2;\nperspective_type fish_eye;\n", "line 5: perspective_type: fish_eye is not imported"},
+        {"hybrid_fractal_enable true;\nformula_1 2;\nformula_2 4;\n", "a hybrid of 3D and four-dimensional formulas is not imported"},
+        {"hybrid_fractal_enable true;\nformula_1 2;\nformula_2 103;\n", "a pseudo-Kleinian in a hybrid with other formulas is not imported"},
+        {"hybrid_fractal_enable true;\nformula_1 2;\ncheck_for_bailout_1 false;\n", "line 6: check_for_bailout_1: false is not imported"},
         {"formula_1 2;\nfractal_constant_factor 1 0 1;\n", "c scaled unevenly"},
         {"hybrid_fractal_enable true;\nformula_1 2;\nrepeat_from 2;\n", "line 6: repeat_from: 2 is not imported"},
         {"formula_1 2;\nN many;\n", "line 5: N: 'many' is not a number"},
