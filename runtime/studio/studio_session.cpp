@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "graph/body_literal_params.h"
 #include "studio/diagnostics_json.h"
 
 namespace fg::studio {
@@ -31,7 +32,8 @@ std::optional<CompileResult> StudioSession::compile_preview(const std::string& g
     options.optimize = false;
     options.cache = &pass_cache_;
     if (!every_pass) options.only_passes = preview_passes_;
-    return compile_graph(graph_text, library_, options, diag);
+    // A formula's numbers as uniforms: editing one compiles nothing.
+    return compile_graph(with_body_literals_as_params(graph_text, library_), library_, options, diag);
 }
 
 EditOutcome StudioSession::compile(const std::string& graph_text, std::uint64_t revision) {

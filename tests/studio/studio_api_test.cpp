@@ -37,6 +37,7 @@ protected:
         fs::create_directories(work / "folder");
         for (const char* name : {"mandelbulb.json", "menger.json"})
             fs::copy_file(fs::path(FG_SOURCE_DIR) / "graphs/gallery" / name, work / "folder" / name);
+        fs::copy_file(fs::path(FG_SOURCE_DIR) / "graphs/formulas/mandelbox.json", work / "folder" / "formula_box.json");
         std::ofstream(work / "outside.json") << "{\"outside\": true}";
         ctx = new vk::Context(fgplay::render_context_options(true, ""));
         SessionOptions options;
@@ -214,6 +215,38 @@ TEST_F(StudioApiTest, AnEditRecompilesOnlyThePassItChangedAndAnExportIsTheWholeO
     ASSERT_TRUE(full) << diag.format();
     const auto bytes = pack_bytes(*full);
     EXPECT_EQ(read(work / "folder" / "edited.fgpack"), std::string(bytes.begin(), bytes.end()));
+}
+
+TEST_F(StudioApiTest, AFormulaBodysNumberIsAUniformSoEditingItCompilesNoPass) {
+    auto g = graph("formula_box.json");
+    ASSERT_TRUE(compiled(g)["ok"]);
+    const std::string before = frame({});
+    bool edited = false;
+    for (auto& node : g["nodes"])
+        if (node.contains("formula"))
+            for (auto& stage : node["formula"]["groups"][0]["nodes"])
+                if (stage["type"] == "stage.sphere_fold") {
+                    stage["inputs"]["min_radius"] = 0.3123;   // a shape no other test compiles
+                    edited = true;
+                }
+    ASSERT_TRUE(edited);
+    const auto pipelines = session->preview().pipelines_built();
+    auto state = compiled(g);
+    ASSERT_TRUE(state["ok"]) << state;
+    // The new radius is a parameter's default: the passes' code is the same, so none is compiled
+    // and no pipeline built, and the frame shows the new shape.
+    EXPECT_EQ(state["passes_compiled"], 0) << state;
+    EXPECT_EQ(session->preview().pipelines_built(), pipelines);
+    EXPECT_NE(frame({}), before);
+    // A stage added to the body changes the code: that compiles.
+    for (auto& node : g["nodes"])
+        if (node.contains("formula")) {
+            auto& nodes = node["formula"]["groups"][0]["nodes"];
+            nodes.push_back({{"id", "turn"}, {"type", "stage.rotate"}, {"inputs", {{"z", nodes.back()["id"]}, {"axis", {0, 1, 0}}, {"angle_deg", 10}}}});
+        }
+    state = compiled(g);
+    ASSERT_TRUE(state["ok"]) << state;
+    EXPECT_GT(state["passes_compiled"].get<int>(), 0) << state;
 }
 
 TEST_F(StudioApiTest, ATypeErrorNamesItsNodeAndPortAndTheLastGoodPackKeepsPlaying) {
