@@ -19,6 +19,7 @@ import {
 } from "@xyflow/react";
 import { api, REFINED_SAMPLES, type CalibrationStatus, type CompileState, type Diagnostic, type FrameInfo, type GraphDoc, type GraphNodeDoc, type Json, type NodeDef, type ProbeInfo } from "./api";
 import { addNode, nodesOf, pasteNodes, placeOf, portsOf, removeNodes, setBinding, setNodeField, uniqueId, wiresOf } from "./graph";
+import { bodyView, groupNames, placeInBody, withBody, type OpenBody } from "./body";
 import { autoLayout, editorPositions, type Positions } from "./layout";
 import { History } from "./history";
 import { GraphNode, type GraphFlowNode } from "./GraphNode";
@@ -68,10 +69,20 @@ function Studio() {
   const [previews, setPreviews] = useState<Record<string, string>>({});
   const [toast, setToast] = useState("");
   const [calibration, setCalibration] = useState<CalibrationStatus | null>(null);
+  // A formula's body opened on the canvas (its group's stages), or null for the graph itself.
+  const [openBody, setOpenBody] = useState<OpenBody | null>(null);
+  const [bodyPositions, setBodyPositions] = useState<Positions>({});
+  const openRef = useRef(openBody);
+  openRef.current = openBody;
+  const viewDoc = useMemo(() => (doc && openBody ? bodyView(doc, openBody) : doc), [doc, openBody]);
 
   const history = useRef(new History<Snapshot>());
   const snapshot = useRef<Snapshot>({ doc: {}, positions: {} });
   snapshot.current = { doc: doc ?? {}, positions };
+  // What the canvas shows of a document (the open body, or all of it), and a document with an edit
+  // of that view written back.
+  const viewOf = (d: GraphDoc): GraphDoc => (openRef.current ? bodyView(d, openRef.current) : d);
+  const fromView = (d: GraphDoc, view: GraphDoc): GraphDoc => (openRef.current ? withBody(d, openRef.current, view) : view);
   const clipboard = useRef<GraphNodeDoc[]>([]);
   const latestRevision = useRef(0);
 
@@ -142,6 +153,7 @@ function Studio() {
         setParams(paramDefaults(graph));
         setCamera(sceneCamera(graph));
         setProbe(null);
+        setOpenBody(null);
         history.current.clear();
         window.history.replaceState(null, "", `?graph=${encodeURIComponent(p)}`);
         window.setTimeout(() => flow.fitView({ padding: 0.1 }), 50);
@@ -255,12 +267,40 @@ function Studio() {
   const undo = () => restore(history.current.undo(snapshot.current));
   const redo = () => restore(history.current.redo(snapshot.current));
 
-  const onBinding = useCallback((id: string, port: string, value: Json | undefined) => commit(setBinding(snapshot.current.doc, id, port, value)), [commit]);
+  const onBinding = useCallback(
+    (id: string, port: string, value: Json | undefined) => {
+      const d = snapshot.current.doc;
+      commit(fromView(d, setBinding(viewOf(d), id, port, value)));
+    },
+    [commit],
+  );
   const onCode = useCallback((id: string, code: string[]) => commit(setNodeField(snapshot.current.doc, id, "code", code)), [commit]);
+  const openFormula = useCallback(
+    (id: string, group: number) => {
+      const open = { node: id, group };
+      setOpenBody(open);
+      setBodyPositions(autoLayout(bodyView(snapshot.current.doc, open), catalogMap));
+      window.setTimeout(() => flow.fitView({ padding: 0.15 }), 50);
+    },
+    [catalogMap, flow],
+  );
+  const closeFormula = () => {
+    setOpenBody(null);
+    window.setTimeout(() => flow.fitView({ padding: 0.1 }), 50);
+  };
 
   const addType = useCallback(
     (type: string) => {
       const current = snapshot.current.doc;
+      const centre = flow.screenToFlowPosition({ x: window.innerWidth * 0.4, y: window.innerHeight * 0.45 });
+      if (openRef.current) {
+        // Inside a body: a stage, its z left to the point entering the group until it is wired.
+        const view = viewOf(current);
+        const id = uniqueId(view, type.split(".").pop() ?? "stage");
+        setBodyPositions((p) => ({ ...p, [id]: [Math.round(centre.x), Math.round(centre.y)] }));
+        commit(fromView(current, addNode(view, { id, type })));
+        return;
+      }
       const id = uniqueId(current, type.split(".").pop() ?? "node");
       const node: GraphNodeDoc =
         type === "custom.glsl"
@@ -268,7 +308,6 @@ function Studio() {
           : type === "fractal.formula"
             ? { id, type, ...(structuredClone(catalog.find((d) => d.type === type)?.example ?? {}) as object) }
             : { id, type };
-      const centre = flow.screenToFlowPosition({ x: window.innerWidth * 0.4, y: window.innerHeight * 0.45 });
       commit(addNode(current, node), { ...snapshot.current.positions, [id]: [Math.round(centre.x), Math.round(centre.y)] });
     },
     [commit, flow, catalog],
@@ -280,12 +319,13 @@ function Studio() {
   const onConnect = useCallback(
     async (c: Connection) => {
       if (!c.source || !c.target || !c.sourceHandle || !c.targetHandle || c.source === OUTPUT_NODE_ID) return;
-      const bind = (doc: GraphDoc) => setBinding(doc, c.target, c.targetHandle!, `${c.source}.${c.sourceHandle}`);
+      const open = openRef.current;
+      const bind = (doc: GraphDoc) => fromView(doc, setBinding(viewOf(doc), c.target, c.targetHandle!, `${c.source}.${c.sourceHandle}`));
       try {
         const candidate = bind(snapshot.current.doc);
         const check = await api.validate(compiledDoc(candidate));
         const reason = check.diagnostics.find((d) => {
-          const place = placeOf(candidate, d.pointer, d.node);
+          const place = open ? placeInBody(candidate, open, d.pointer) : placeOf(candidate, d.pointer, d.node);
           return d.severity === "error" && place?.node === c.target && (place.port === c.targetHandle || !place.port);
         });
         if (reason) say(`wire refused: ${reason.message}`);
@@ -312,11 +352,12 @@ function Studio() {
 
   const deleteSelection = useCallback(
     (nodeIds: string[], edgeList: Edge[]) => {
-      let next = snapshot.current.doc;
+      const view = viewOf(snapshot.current.doc);
+      let next = view;
       for (const e of edgeList) next = setBinding(next, e.target, e.targetHandle ?? "", undefined);
       const ids = new Set(nodeIds.filter((id) => id !== OUTPUT_NODE_ID));
       if (ids.size) next = removeNodes(next, ids);
-      if (next !== snapshot.current.doc) commit(next);
+      if (next !== view) commit(fromView(snapshot.current.doc, next));
     },
     [commit],
   );
@@ -324,23 +365,25 @@ function Studio() {
   // --- canvas nodes and wires from the document ------------------------------------------------------
   const diagnostics = compile?.diagnostics ?? [];
   useEffect(() => {
-    if (!doc) return;
+    if (!doc || !viewDoc) return;
     const placed = new Map<string, { port?: string; diagnostic: Diagnostic }[]>();
     for (const d of diagnostics) {
-      const place = placeOf(doc, d.pointer, d.node);
+      const place = openBody ? placeInBody(doc, openBody, d.pointer) : placeOf(doc, d.pointer, d.node);
       if (place) placed.set(place.node, [...(placed.get(place.node) ?? []), { port: place.port, diagnostic: d }]);
     }
-    const wires = wiresOf(doc, catalogMap);
+    const where = openBody ? bodyPositions : positions;
+    const wires = wiresOf(viewDoc, catalogMap);
     const wired = (id: string) => new Set(wires.filter((w) => w.target === id).map((w) => w.targetHandle));
     setNodes((old) => {
       const before = new Map(old.map((n) => [n.id, n]));
       const make = (id: string, data: GraphFlowNode["data"]): GraphFlowNode => {
         const o = before.get(id);
-        const p = positions[id] ?? [0, 0];
+        const p = where[id] ?? [0, 0];
         return { ...(o ?? {}), id, type: "graph", position: { x: p[0], y: p[1] }, data } as GraphFlowNode;
       };
-      const list = nodesOf(doc).map((n) => {
+      const list = nodesOf(viewDoc).map((n) => {
         const ports = portsOf(n, catalogMap);
+        const groups = n.type === "fractal.formula" && !openBody ? groupNames(doc, n.id) : [];
         return make(n.id, {
           doc: n,
           title: n.id,
@@ -352,14 +395,16 @@ function Studio() {
           preview: previews[n.id],
           onBinding: (port, value) => onBinding(n.id, port, value),
           onCode: (code) => onCode(n.id, code),
+          bodyGroups: groups,
+          onOpenBody: (group) => openFormula(n.id, group),
         });
       });
       list.push(
         make(OUTPUT_NODE_ID, {
           doc: null,
-          title: "outputs",
-          summary: "what the scene shows: the distance, and how the surface is shaded",
-          inputs: graphOutputs.map((o) => ({ name: o.name, type: o.type, doc: o.name })),
+          title: openBody ? "z leaving the group" : "outputs",
+          summary: openBody ? "the stage whose z the next group (or the next iteration) takes" : "what the scene shows: the distance, and how the surface is shaded",
+          inputs: openBody ? [{ name: "z", type: "vec3", doc: "the orbit point leaving the group" }] : graphOutputs.map((o) => ({ name: o.name, type: o.type, doc: o.name })),
           outputs: [],
           wired: wired(OUTPUT_NODE_ID),
           diagnostics: placed.get(OUTPUT_NODE_ID) ?? [],
@@ -372,12 +417,12 @@ function Studio() {
     setEdges((old) => {
       const selected = new Set(old.filter((e) => e.selected).map((e) => e.id));
       return wires.map((w) => {
-        const sourceNode = nodesOf(doc).find((n) => n.id === w.source);
+        const sourceNode = nodesOf(viewDoc).find((n) => n.id === w.source);
         const type = sourceNode ? portsOf(sourceNode, catalogMap).outputs.find((o) => o.name === w.sourceHandle)?.type ?? "float" : "float";
         return { ...w, selected: selected.has(w.id), style: { stroke: typeColour(type), strokeWidth: 2 } };
       });
     });
-  }, [doc, positions, diagnostics, previews, catalogMap, onBinding, onCode]);
+  }, [doc, viewDoc, openBody, positions, bodyPositions, diagnostics, previews, catalogMap, onBinding, onCode, openFormula]);
 
   // React Flow starts a wire from the bounds of the handles it measured in each node. On a loaded
   // machine it sometimes holds a node's measured size but no handle bounds after the page loads,
@@ -458,15 +503,18 @@ function Studio() {
       else if (key === "s") save(path);
       else if (key === "c") {
         const ids = new Set(nodes.filter((n) => n.selected).map((n) => n.id));
-        clipboard.current = nodesOf(snapshot.current.doc).filter((n) => ids.has(n.id));
+        clipboard.current = nodesOf(viewOf(snapshot.current.doc)).filter((n) => ids.has(n.id));
       } else if (key === "v" && clipboard.current.length) {
-        const { doc: next, ids } = pasteNodes(snapshot.current.doc, clipboard.current);
-        const moved = { ...snapshot.current.positions };
+        const { doc: next, ids } = pasteNodes(viewOf(snapshot.current.doc), clipboard.current);
+        const moved = { ...(openRef.current ? bodyPositions : snapshot.current.positions) };
         for (const [from, to] of ids) {
           const p = moved[from] ?? [0, 0];
           moved[to] = [p[0] + 40, p[1] + 40];
         }
-        commit(next, moved);
+        if (openRef.current) {
+          setBodyPositions(moved);
+          commit(fromView(snapshot.current.doc, next));
+        } else commit(next, moved);
       } else return;
       e.preventDefault();
     };
@@ -516,8 +564,21 @@ function Studio() {
         <button onClick={redo} title="Ctrl+Shift+Z">Redo</button>
         <span className="hint">Ctrl+C / Ctrl+V copy and paste, Delete removes, Ctrl+S saves</span>
       </header>
-      <Palette nodes={catalog} onAdd={addType} />
+      <Palette nodes={catalog} onAdd={addType} stages={openBody !== null} />
       <main className="canvas">
+        {openBody && doc && (
+          <div className="body-bar" data-testid="body-bar">
+            <span>
+              body of <b>{openBody.node}</b>:
+            </span>
+            {groupNames(doc, openBody.node).map((name, i) => (
+              <button key={i} className={i === openBody.group ? "active" : ""} data-testid={`body-group-${i}`} onClick={() => openFormula(openBody.node, i)}>
+                {name}
+              </button>
+            ))}
+            <button onClick={closeFormula} data-testid="close-body">Close</button>
+          </div>
+        )}
         <ReactFlow
           nodes={nodes}
           edges={edges}
@@ -528,6 +589,15 @@ function Studio() {
           onConnectEnd={onConnectEnd}
           onDelete={({ nodes: gone, edges: cut }) => deleteSelection(gone.map((n) => n.id), cut)}
           onNodeDragStop={(_, __, moved) => {
+            if (openRef.current) {
+              // A body's layout is the page's own: it is not saved with the graph.
+              setBodyPositions((p) => {
+                const next = { ...p };
+                for (const n of moved) next[n.id] = [Math.round(n.position.x), Math.round(n.position.y)];
+                return next;
+              });
+              return;
+            }
             const next = { ...snapshot.current.positions };
             for (const n of moved) next[n.id] = [Math.round(n.position.x), Math.round(n.position.y)];
             history.current.push(snapshot.current);

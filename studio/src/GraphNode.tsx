@@ -18,6 +18,8 @@ export interface GraphNodeData extends Record<string, unknown> {
   preview?: string;
   onBinding: (port: string, value: Json | undefined) => void;
   onCode: (code: string[]) => void;
+  bodyGroups?: string[]; // a formula node's stage groups, each opened on the canvas by a button
+  onOpenBody?: (group: number) => void;
 }
 
 export type GraphFlowNode = Node<GraphNodeData, "graph">;
@@ -129,6 +131,15 @@ function GraphNodeView({ id: flowId, data, selected }: NodeProps<GraphFlowNode>)
         ))}
       </div>
       {code && <CodeBox nodeId={id} code={code} onCommit={data.onCode} />}
+      {data.bodyGroups && data.bodyGroups.length > 0 && (
+        <div className="body-groups">
+          {data.bodyGroups.map((name, i) => (
+            <button key={i} className="nodrag" data-testid={`open-body-${id}-${i}`} title="open this group of the formula's body on the canvas" onClick={() => data.onOpenBody?.(i)}>
+              open {name}
+            </button>
+          ))}
+        </div>
+      )}
       {data.diagnostics.length > 0 && (
         <ul className="node-diagnostics" data-testid={`diag-${id}`}>
           {data.diagnostics.map((d, i) => (

@@ -4,13 +4,13 @@ import { useMemo, useState } from "react";
 import type { NodeDef } from "./api";
 import { typeColour } from "./types";
 
-export function Palette({ nodes, onAdd }: { nodes: NodeDef[]; onAdd: (type: string) => void }) {
+// Inside an open formula body (`stages`) it offers the stages, which belong there and nowhere else.
+export function Palette({ nodes, onAdd, stages }: { nodes: NodeDef[]; onAdd: (type: string) => void; stages: boolean }) {
   const [query, setQuery] = useState("");
   const [hover, setHover] = useState<NodeDef | null>(null);
   const groups = useMemo(() => {
     const q = query.trim().toLowerCase();
-    // Formula stages belong inside a fractal.formula's body, which is edited in the graph's JSON.
-    const found = nodes.filter((n) => !n.stage && (!q || n.type.includes(q) || n.summary.toLowerCase().includes(q)));
+    const found = nodes.filter((n) => !!n.stage === stages && (!q || n.type.includes(q) || n.summary.toLowerCase().includes(q)));
     const byCategory = new Map<string, NodeDef[]>();
     for (const n of found) byCategory.set(n.category, [...(byCategory.get(n.category) ?? []), n]);
     return [...byCategory.entries()];
@@ -20,7 +20,7 @@ export function Palette({ nodes, onAdd }: { nodes: NodeDef[]; onAdd: (type: stri
       <input className="search" placeholder="search nodes" value={query} data-testid="palette-search" onChange={(e) => setQuery(e.target.value)} />
       <div className="palette-list">
         {groups.map(([category, defs]) => (
-          <details key={category} open={query !== "" || category === "fractal" || category === "op"}>
+          <details key={category} open={query !== "" || stages || category === "fractal" || category === "op"}>
             <summary>{category}</summary>
             {defs.map((d) => (
               <button
@@ -39,12 +39,12 @@ export function Palette({ nodes, onAdd }: { nodes: NodeDef[]; onAdd: (type: stri
             ))}
           </details>
         ))}
-        <details open={query !== ""}>
+        {!stages && <details open={query !== ""}>
           <summary>custom</summary>
           <button className="palette-item" data-testid="palette-custom.glsl" onClick={() => onAdd("custom.glsl")}>
             glsl
           </button>
-        </details>
+        </details>}
       </div>
       {hover && (
         <div className="node-doc" data-testid="node-doc">

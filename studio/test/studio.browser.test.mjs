@@ -34,6 +34,7 @@ before(async () => {
   fs.mkdirSync(shots, { recursive: true });
   for (const name of ["mandelbulb.json", "menger.json", "mandelbox.json"])
     fs.copyFileSync(path.join(env("FG_SOURCE_DIR"), "graphs/gallery", name), path.join(folder, name));
+  fs.copyFileSync(path.join(env("FG_SOURCE_DIR"), "graphs/formulas/mandelbox.json"), path.join(folder, "formula_box.json"));
   server = spawn(env("FGPLAY"), ["studio", path.join(folder, "mandelbulb.json"), "--port", "0", "--fgc", env("FGC")], {
     stdio: ["ignore", "pipe", "inherit"],
   });
@@ -364,6 +365,34 @@ test("the studio edits a graph with a live preview", async (t) => {
     await idle();
     await saveAs("copy/menger.json");
     assert.ok(fs.readFileSync(path.join(folder, "copy/menger.json")).equals(fs.readFileSync(path.join(folder, "menger.json"))));
+  });
+
+  await t.test("a formula's body opens on the canvas, and a number edited there reshapes the preview without a compile", async () => {
+    await page.select('[data-testid="graph-select"]', "formula_box.json");
+    await page.waitForSelector('[data-testid="node-box"]', { timeout: 60000 });
+    let before = await waitForPreview();
+    await idle();
+    await page.click('[data-testid="open-body-box-0"]');
+    await page.waitForSelector('[data-testid="node-sphere"]', { timeout: 30000 });
+    const search = await page.$('[data-testid="palette-search"]');
+    await search.click({ clickCount: 3 });
+    await search.type("fold");
+    assert.ok(await page.$('[data-testid="palette-stage.plane_fold"]'), "inside a body the palette offers the stages");
+    assert.equal(await page.$('[data-testid="palette-op.round"]'), null, "and only the stages");
+    assert.equal(await page.$('[data-testid="node-trap"]'), null, "the graph's other nodes are not shown inside the body");
+    await setLiteral("sphere", "min_radius", "0.3");
+    const after = await waitForPreview(before);
+    await idle();
+    const state = await serverState();
+    assert.equal(state.passes_compiled, 0, "a body's number is a uniform: editing it compiles no pass");
+    await page.screenshot({ path: path.join(shots, "formula_body.png") });
+    await page.click('[data-testid="close-body"]');
+    await page.waitForSelector('[data-testid="node-trap"]', { timeout: 30000 });
+    assert.notEqual(after.hash, before.hash);
+    await saveAs("saved/formula_box.json");
+    const saved = JSON.parse(fs.readFileSync(path.join(folder, "saved/formula_box.json"), "utf8"));
+    assert.equal(saved.nodes[0].formula.groups[0].nodes[1].inputs.min_radius, 0.3);
+    execFileSync(env("FGC"), ["check", path.join(folder, "saved/formula_box.json")], { stdio: "inherit" });
   });
 
   await t.test("New starts a graph that compiles and previews, unsaved until saved", async () => {
