@@ -10,8 +10,8 @@ formula's conventions where a close camera fills the frame.
 
 usage: import_silhouettes.py BUILD OUT_DIR [--size 256] [--coverage] [--far D] [SCENE.fract ...]
 Writes OUT_DIR/silhouettes.md (the table), OUT_DIR/silhouettes.png (per scene, three to a row in the
-table's order: Mandelbulber2's mask, fgplay's, their difference) and, with --coverage,
-OUT_DIR/coverage.md.
+table's order: Mandelbulber2's mask, fgplay's, their difference; silhouettes_far.* with --far) and,
+with --coverage, OUT_DIR/coverage.md.
 """
 import argparse
 import collections
@@ -29,7 +29,7 @@ EXAMPLES = "/usr/share/mandelbulber2/examples"
 LOOK_OFF = "#".join(f"{k}=false" for k in (
     "ambient_occlusion_enabled", "DOF_enabled", "shadows_enabled", "raytraced_reflections", "volumetric_fog_enabled",
     "glow_enabled", "iteration_fog_enable", "main_light_volumetric_enabled", "fake_lights_enabled", "basic_fog_enabled",
-    "DOF_monte_carlo", "antialiasing_enabled"))
+    "DOF_monte_carlo", "antialiasing_enabled", "stereo_enabled", *(f"aux_light_volumetric_enabled_{i}" for i in range(1, 5))))
 
 
 def run(argv, **kw):
@@ -104,17 +104,21 @@ def silhouettes(build, out, scenes, size, far=None):
                  "--depth"], check=True)
             theirs = numpy.array(Image.open(mb))[..., 3] > 127
             ours = numpy.array(Image.open(os.path.join(work, "depth_left.png"))) > 0
+            if theirs.shape != ours.shape:
+                print(f"{name}: skipped (Mandelbulber2 drew {theirs.shape[1]}x{theirs.shape[0]})")
+                continue
             union = numpy.count_nonzero(theirs | ours)
             iou = numpy.count_nonzero(theirs & ours) / union if union else 1.0
             rows.append((name, iou, theirs.mean(), ours.mean(), imp.stdout.strip().split(": ")[-1]))
             tiles.append(numpy.concatenate([theirs, ours, theirs ^ ours], axis=1))
             print(f"{name}: IoU {iou:.3f}")
-    with open(os.path.join(out, "silhouettes.md"), "w") as f:
+    stem = "silhouettes_far" if far else "silhouettes"
+    with open(os.path.join(out, f"{stem}.md"), "w") as f:
         f.write(f"| scene | IoU | Mandelbulber2 coverage | fgplay coverage | imported as |\n|---|---:|---:|---:|---|\n")
         for name, iou, a, b, what in rows:
             f.write(f"| {name} | {iou:.3f} | {100 * a:.1f} % | {100 * b:.1f} % | {what} |\n")
     if tiles:
-        sheet(tiles).save(os.path.join(out, "silhouettes.png"))
+        sheet(tiles).save(os.path.join(out, f"{stem}.png"))
 
 
 def sheet(tiles, across=3):

@@ -1,5 +1,7 @@
 #include "mandelbulber_formulas.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <functional>
 #include <map>
@@ -128,6 +130,10 @@ private:
 glm::dmat3 mandelbox_rotation(const glm::dvec3& deg) { return rotation_zyx(deg.z, deg.y, deg.x); }
 glm::dmat3 ifs_rotation(const glm::dvec3& deg) { return rotation_zyx(deg.x, deg.y, deg.z); }
 
+// The ball a power map z^n + w c (n >= 2, |z^n| = |z|^n) keeps its set in: once |w c| > 2, every
+// iterate grows, so no point beyond 2 / |w| belongs to it (beyond 1 without c).
+double power_map_bound(const AddC& c) { return c.dont_add_c ? 2.0 : 2.0 / std::min(1.0, std::max(std::abs(c.weight), 1e-6)); }
+
 // Mandelbulber 2's formula 2: z -> z^power with theta the elevation above the xy plane (its z is
 // up), each angle first turned by its offset, then + c. Its angle about z is the graph's about y
 // the other way round, so alpha turns the graph's phi by -alpha.
@@ -139,7 +145,9 @@ std::optional<ImportedFormula> mandelbulb(int slot, const AddC& c, const FractSe
     Chain body;
     body.add("power", "stage.triplex_power_elevation", {{"power", power}, {"theta_offset_deg", beta}, {"phi_offset_deg", -alpha}});
     body.add_c(c);
-    return ImportedFormula{"mandelbulb", body.nodes(), 10.0, "log"};
+    ImportedFormula f{"mandelbulb", body.nodes(), 10.0, "log"};
+    if (power >= 2.0) f.bound_radius = power_map_bound(c);
+    return f;
 }
 
 // Formula 3: the power-2 bulb, ((x^2 - y^2)(1 - z^2 / rho^2), 2xy(1 - z^2 / rho^2), -2 z rho) + c with
@@ -152,7 +160,9 @@ std::optional<ImportedFormula> mandelbulb_power2(int, const AddC& c, const Fract
     Chain body;
     power2_bulb(body);
     body.add_c(c);
-    return ImportedFormula{"mandelbulb_power2", body.nodes(), 10.0, "log"};
+    ImportedFormula f{"mandelbulb_power2", body.nodes(), 10.0, "log"};
+    f.bound_radius = power_map_bound(c);
+    return f;
 }
 
 // Formula 16, Box Fold Bulb Pow 2: a box fold at the folding factor, the sphere fold of radii 0.5
@@ -229,7 +239,9 @@ std::optional<ImportedFormula> quaternion(int, const AddC& c, const FractSetting
     Chain body;
     body.add("square", "stage.quaternion_square_3d");
     body.add_c(c);
-    return ImportedFormula{"quaternion", body.nodes(), 10.0, "log"};
+    ImportedFormula f{"quaternion", body.nodes(), 10.0, "log"};
+    f.bound_radius = power_map_bound(c);
+    return f;
 }
 
 // Formula 4, Hypercomplex: z^2 + c in Mandelbulber's commutative hypercomplex numbers, 4D.

@@ -23,6 +23,7 @@ struct ImportedFormula {
     // them (the estimate of a pseudo-Kleinian singles out its z).
     bool native_axes = false;
     double sheet_radius = 0.0;   // estimate "sheet": the seed disc's radius
+    double bound_radius = 0.0;   // alone in a formula, the set lies within this radius (0: not known)
 };
 
 // How the slot adds c: its weight (Mandelbulber's fractal_constant_factor when uniform), and the

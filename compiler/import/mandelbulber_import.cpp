@@ -211,6 +211,7 @@ private:
             (f->four_d ? four_d_ : three_d_) = true;
             (f->native_axes ? native_ : graph_axes_) = true;
             if (f->sheet_radius > 0.0) sheet_radius_ = f->sheet_radius;
+            bound_radius_ = f->bound_radius;
             // A power map's logarithmic estimate wins in a hybrid; else the first formula's.
             if (estimate_.empty() || f->estimate == "log") estimate_ = f->estimate;
             if (names.size() == 1) linear_radius_ = f->linear_radius;
@@ -237,6 +238,8 @@ private:
         json body{{"groups", groups}, {"estimate", estimate_}};
         if (estimate_ == "linear" && linear_radius_ != 0.0) body["linear_radius"] = linear_radius_;
         if (estimate_ == "sheet") body["sheet_radius"] = sheet_radius_;
+        // Far away the logarithmic estimate overshoots the set; a lone power map's ball caps it.
+        if (!hybrid && slots.size() == 1 && bound_radius_ > 0.0) body["bound_radius"] = bound_radius_;
         // The ray stops where the orbit stays within the bailout for all N iterations.
         if (flag("iteration_threshold_mode", false)) body["filled"] = true;
         const bool windows = std::any_of(slots.begin(), slots.end(), [&](const Slot& s) { return s.start > 0 || s.stop < iterations - 1; });
@@ -315,7 +318,7 @@ private:
     Diagnostics& diag_;
     double bailout_ = 0.0, linear_radius_ = 0.0;
     bool four_d_ = false, three_d_ = false, native_ = false, graph_axes_ = false;
-    double sheet_radius_ = 1.0;
+    double sheet_radius_ = 1.0, bound_radius_ = 0.0;
     std::string description_, estimate_;
 };
 

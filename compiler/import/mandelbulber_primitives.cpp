@@ -62,7 +62,7 @@ std::string import_primitives(const FractSettings& settings, json& nodes, const 
         if (!std::regex_match(key, m, enabled_key) || value.text != "true") continue;
         const std::string type = m[1], name = fmt::format("primitive_{}_{}", m[1].str(), m[2].str());
         if (type != "sphere" && type != "box" && type != "plane" && type != "torus") {
-            diag.error(fmt::format("line {}: {}: a {} primitive is not imported (spheres, boxes, planes and tori are)", value.line, key, type));
+            diag.error(fmt::format("line {}: {}: a {} primitive is not imported (only spheres, boxes, planes and tori are)", value.line, key, type));
             continue;
         }
         PrimitiveReader r(settings, name, diag);

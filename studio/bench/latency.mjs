@@ -5,7 +5,8 @@
 // A benchmark, not a test: prints a Markdown table for docs/studio.md.
 //   node studio/bench/latency.mjs FGPLAY GRAPH [--size 256] [--moves 60] [--edits 20]
 // The graph must have the gallery Mandelbulb's nodes `tone` (math.scale), `shift` (math.add) and
-// `palette` (palette.cosine). Every edit leaves a graph not seen before, in this run or an earlier
+// `palette` (palette.cosine); a graph with a formula node (graphs/formulas/mandelbox.json) also
+// times an edit of a number in its body. Every edit leaves a graph not seen before, in this run or an earlier
 // one: each round of three edits starts with a new value of tone's literal, counted from a random
 // start, so neither the server's caches nor Mesa's shader cache can answer for the pass it changes.
 import { spawn } from "node:child_process";
@@ -84,6 +85,21 @@ const kinds = {
     palette.inputs.t = `added${round}`;
   },
 };
+// A graph with a formula node gets a fourth kind: a number of its body (the sphere fold's radius,
+// or its first stage's first number), which the preview holds as a uniform.
+const formula = graph.nodes.find((n) => n.formula);
+if (formula) {
+  const stages = formula.formula.groups[0].nodes;
+  const stage = stages.find((n) => n.type === "stage.sphere_fold") ?? stages[0];
+  const key = stage.type === "stage.sphere_fold" ? "min_radius" : Object.keys(stage.inputs ?? {}).find((k) => typeof stage.inputs[k] === "number");
+  if (key) {
+    const base = stage.inputs[key];
+    kinds["formula number"] = (g, round) => {
+      const s = node(g, formula.id).formula.groups[0].nodes.find((n) => n.id === stage.id);
+      s.inputs[key] = base * (1 + 0.01 * Math.sin(start * 1000 + round));
+    };
+  }
+}
 const measured = Object.fromEntries(Object.keys(kinds).map((k) => [k, { total: [], compile: [], glslang: [], optimize: [], pipelines: [], frame: [], passes: [] }]));
 const current = JSON.parse(JSON.stringify(graph));
 for (let round = 0; round < edits; ++round) {

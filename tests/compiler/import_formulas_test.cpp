@@ -327,3 +327,12 @@ TEST(ImportedFormulas, primitives_join_the_fractal_where_mandelbulber_places_the
     EXPECT_NEAR(at({-9.5, 0.3, 0.2}), 0.5, 1e-9);
     EXPECT_LT(at({-10.5, 0, 0}), 0.0);
 }
+
+TEST(ImportedFormulas, a_lone_bulb_far_away_is_capped_by_the_ball_its_set_lies_in) {
+    // Mandelbulber's bailout of 10 leaves the logarithmic estimate too long far from the set (10.3
+    // from 9.3 away, where the set's tips are 8 away): rays stepped over the whole bulb. The set
+    // of z^8 + 1.1 c lies within 2 / 1.1 of the origin and reaches past 1 on every axis.
+    auto eval = imported("formula_1 2;\nN 12;\nfractal_constant_factor 1,1 1,1 1,1;\n[fractal_1]\npower 8;\n");
+    ASSERT_TRUE(eval);
+    for (const Vec& p : {Vec(9, 0, 0), Vec(0, -7, 4), Vec(3, 5, -6)}) EXPECT_LE(eval->distance(p), glm::length(p) - 1.0) << p.x << " " << p.y << " " << p.z;
+}
