@@ -150,6 +150,21 @@ std::optional<ImportedFormula> mandelbulb(int slot, const AddC& c, const FractSe
     return f;
 }
 
+// Formula 11, Xenodreambuie: the power with the colatitude folded into the upper half (its alpha
+// offset turns the colatitude, its beta the angle about z), then + c.
+std::optional<ImportedFormula> xenodreambuie(int slot, const AddC& c, const FractSettings& s, Diagnostics& diag) {
+    SlotReader r(11, "xenodreambuie", slot, s, diag);
+    const double power = r.number("power", 9.0);
+    const double alpha = r.number("alpha_angle_offset", 0.0), beta = r.number("beta_angle_offset", 0.0);
+    if (!r.ok()) return std::nullopt;
+    Chain body;
+    body.add("power", "stage.xenodreambuie", {{"power", power}, {"theta_offset_deg", alpha}, {"phi_offset_deg", beta}});
+    body.add_c(c);
+    ImportedFormula f{"xenodreambuie", body.nodes(), 10.0, "log"};
+    if (power >= 2.0) f.bound_radius = power_map_bound(c);
+    return f;
+}
+
 // Formula 3: the power-2 bulb, ((x^2 - y^2)(1 - z^2 / rho^2), 2xy(1 - z^2 / rho^2), -2 z rho) + c with
 // rho^2 = x^2 + y^2: the elevation-angle power of 2 with its z mirrored.
 void power2_bulb(Chain& body) {
@@ -401,6 +416,7 @@ const std::map<int, std::pair<const char*, Importer>>& importers() {
     static const std::map<int, std::pair<const char*, Importer>> table{
         {2, {"mandelbulb", mandelbulb}},         {3, {"mandelbulb_power2", mandelbulb_power2}},
         {4, {"hypercomplex", hypercomplex}},     {5, {"quaternion", quaternion}},
+        {11, {"xenodreambuie", xenodreambuie}},
         {7, {"menger_sponge", menger}},          {8, {"mandelbox", mandelbox}},
         {10, {"kaleidoscopic_ifs", kaleidoscopic_ifs}}, {16, {"box_fold_bulb_pow2", box_fold_bulb_pow2}},
         {61, {"menger_mod1", menger_mod1}},      {103, {"pseudo_kleinian", pseudo_kleinian}}};

@@ -226,6 +226,15 @@ TEST(ImportedFormulas, the_bulbs_and_squares_follow_mandelbulbers_orbits) {
              return std::pow(r, 7.0) * Vec(std::cos(7 * th) * std::cos(7 * ph), std::cos(7 * th) * std::sin(7 * ph), std::sin(7 * th));
          },
          10.0},
+        {"formula_1 11;\nN 8;\n[fractal_1]\npower 3;\nalpha_angle_offset 20;\nbeta_angle_offset -10;\n",
+         [](Vec z, double& dr) {
+             const double r = glm::length(z), th = std::atan2(z.y, z.x) + glm::radians(-10.0);
+             double ph = std::acos(z.z / r) + glm::radians(20.0);
+             if (const double pi = 3.14159265358979323846; std::abs(ph) > 0.5 * pi) ph = (ph > 0 ? pi : -pi) - ph;
+             dr *= 3.0 * r * r;
+             return r * r * r * Vec(std::cos(3 * th) * std::sin(3 * ph), std::sin(3 * th) * std::sin(3 * ph), std::cos(3 * ph));
+         },
+         10.0},
         {"formula_1 5;\nN 9;\n",
          [](Vec z, double& dr) {
              dr *= 2.0 * glm::length(z);
