@@ -21,27 +21,9 @@ public:
     SlotReader(int number, std::string formula, int slot, const FractSettings& s, Diagnostics& diag)
         : number_(number), formula_(std::move(formula)), section_(fmt::format("fractal_{}", slot)), settings_(s), diag_(diag) {}
 
-    double number(const std::string& key, double fallback) {
-        const FractValue* v = settings_.find(key, section_);
-        if (!v) return fallback;
-        if (auto x = fract_number(v->text)) return *x;
-        fail(*v, key, fmt::format("'{}' is not a number", v->text));
-        return fallback;
-    }
-    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) {
-        const FractValue* v = settings_.find(key, section_);
-        if (!v) return fallback;
-        if (auto x = fract_vector(v->text)) return *x;
-        fail(*v, key, fmt::format("'{}' is not three numbers", v->text));
-        return fallback;
-    }
-    bool flag(const std::string& key, bool fallback) {
-        const FractValue* v = settings_.find(key, section_);
-        if (!v) return fallback;
-        if (auto x = fract_bool(v->text)) return *x;
-        fail(*v, key, fmt::format("'{}' is not true or false", v->text));
-        return fallback;
-    }
+    double number(const std::string& key, double fallback) { return read(key, fallback, fract_number, "a number"); }
+    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) { return read(key, fallback, fract_vector, "three numbers"); }
+    bool flag(const std::string& key, bool fallback) { return read(key, fallback, fract_bool, "true or false"); }
     // A value this formula cannot draw, named with its line.
     void refuse(const std::string& key, const std::string& why) {
         if (const FractValue* v = settings_.find(key, section_)) fail(*v, key, why);
@@ -56,6 +38,16 @@ public:
     bool ok() const { return ok_; }
 
 private:
+    // The slot's value read by `parse`, or the fallback when it is absent; an error naming the line
+    // when it is not `kind`.
+    template <typename T>
+    T read(const std::string& key, T fallback, std::optional<T> (*parse)(const std::string&), const char* kind) {
+        const FractValue* v = settings_.find(key, section_);
+        if (!v) return fallback;
+        if (auto x = parse(v->text)) return *x;
+        fail(*v, key, fmt::format("'{}' is not {}", v->text, kind));
+        return fallback;
+    }
     void fail(const FractValue& v, const std::string& key, const std::string& why) {
         diag_.error(fmt::format("line {}: [{}] {}: formula {} ({}): {}", v.line, section_, key, number_, formula_, why));
         ok_ = false;

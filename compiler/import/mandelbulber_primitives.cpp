@@ -19,20 +19,8 @@ public:
     PrimitiveReader(const FractSettings& s, std::string name, Diagnostics& diag) : s_(s), name_(std::move(name)), diag_(diag) {}
 
     const FractValue* find(const std::string& key) const { return s_.find(name_ + "_" + key); }
-    double number(const std::string& key, double fallback) {
-        const FractValue* v = find(key);
-        if (!v) return fallback;
-        if (auto x = fract_number(v->text)) return *x;
-        fail(*v, key, fmt::format("'{}' is not a number", v->text));
-        return fallback;
-    }
-    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) {
-        const FractValue* v = find(key);
-        if (!v) return fallback;
-        if (auto x = fract_vector(v->text)) return *x;
-        fail(*v, key, fmt::format("'{}' is not three numbers", v->text));
-        return fallback;
-    }
+    double number(const std::string& key, double fallback) { return read(key, fallback, fract_number, "a number"); }
+    glm::dvec3 vector(const std::string& key, glm::dvec3 fallback) { return read(key, fallback, fract_vector, "three numbers"); }
     void only(const std::string& key, const char* neutral, const char* what) {
         if (const FractValue* v = find(key); v && v->text != neutral)
             fail(*v, key, fmt::format("{} is not imported ({})", v->text, what));
@@ -44,6 +32,15 @@ public:
     bool ok() const { return ok_; }
 
 private:
+    template <typename T>
+    T read(const std::string& key, T fallback, std::optional<T> (*parse)(const std::string&), const char* kind) {
+        const FractValue* v = find(key);
+        if (!v) return fallback;
+        if (auto x = parse(v->text)) return *x;
+        fail(*v, key, fmt::format("'{}' is not {}", v->text, kind));
+        return fallback;
+    }
+
     const FractSettings& s_;
     std::string name_;
     Diagnostics& diag_;
