@@ -10,8 +10,9 @@ using Rule = StageDerivative::Rule;
 
 std::string value(const FormulaProgram& prog, const FormulaArg& a) {
     switch (a.kind) {
-        case FormulaArg::Kind::Orbit: return a.stage < 0 ? "fz_z" : fmt::format("fz_s{}_0", a.stage);
+        case FormulaArg::Kind::Orbit: return a.stage < 0 ? "fz_z" : fmt::format("fz_s{}_{}", a.stage, a.output);
         case FormulaArg::Kind::C: return "fz_c";
+        case FormulaArg::Kind::Iteration: return "float(fz_i)";
         case FormulaArg::Kind::Input: {
             std::string v = formula_param_input(prog.params[static_cast<std::size_t>(a.input - kFormulaFixedPorts)]);
             return a.splat ? fmt::format("vec{}({})", a.splat, v) : v;
@@ -21,18 +22,40 @@ std::string value(const FormulaProgram& prog, const FormulaArg& a) {
     return a.constant.glsl();
 }
 
-// One iteration of a group: each stage's outputs fz_s<k>_<o> and derivative fz_d<k>.
-std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, const std::string& indent) {
+// Tangent j of an argument: d(value)/dp_j over dr. What does not move with the orbit has none.
+std::string tangent(const FormulaProgram& prog, const FormulaArg& a, int j, ValueType type) {
+    switch (a.kind) {
+        case FormulaArg::Kind::Orbit:
+            return a.stage < 0 ? fmt::format("fz_j{}", j) : fmt::format("fz_t{}_{}_{}", a.stage, a.output, j);
+        case FormulaArg::Kind::C:
+            if (!prog.julia) return fmt::format("fz_cj{}", j);
+            break;
+        default: break;
+    }
+    return fmt::format("{}(0.0)", type_name(type));
+}
+
+std::string arguments(const FormulaProgram& prog, const FormulaStage& s) {
+    std::string args;
+    for (std::size_t a = 0; a < s.args.size(); ++a) args += (a ? ", " : "") + value(prog, s.args[a]);
+    return args;
+}
+
+// Each node's outputs fz_s<k>_<o>, and its call.
+std::string call(const FormulaProgram& prog, const FormulaStage& s, std::size_t k, const std::string& indent) {
+    std::string decl, args = arguments(prog, s);
+    for (std::size_t o = 0; o < s.def->outputs.size(); ++o) {
+        decl += fmt::format("{}{} fz_s{}_{};", decl.empty() ? "" : " ", type_name(s.output_type(o)), k, o);
+        args += fmt::format(", fz_s{}_{}", k, o);
+    }
+    return fmt::format("{}{}  // {} ({})\n{}{}({});\n", indent, decl, s.id, s.def->type, indent, s.def->function_name(), args);
+}
+
+// One iteration of a group with scalar dr: each stage's derivative fz_d<k> from its z's.
+std::string scalar_iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, const std::string& indent) {
     std::string out;
     for (std::size_t k = 0; k < g.stages.size(); ++k) {
         const FormulaStage& s = g.stages[k];
-        std::string decl, args;
-        for (std::size_t a = 0; a < s.args.size(); ++a) args += (a ? ", " : "") + value(prog, s.args[a]);
-        for (std::size_t o = 0; o < s.def->outputs.size(); ++o) {
-            std::string type(type_name(s.def->outputs[o].type.concrete ? *s.def->outputs[o].type.concrete : prog.orbit));
-            decl += fmt::format("{}{} fz_s{}_{};", decl.empty() ? "" : " ", type, k, o);
-            args += fmt::format(", fz_s{}_{}", k, o);
-        }
         int from = s.args[0].stage;
         std::string d_in = from < 0 ? "fz_dr_in" : fmt::format("fz_d{}", from);
         std::string d;
@@ -45,12 +68,51 @@ std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, 
                 break;
             default: d = d_in; break;
         }
-        out += fmt::format("{}{}  // {} ({})\n", indent, decl, s.id, s.def->type);
-        out += fmt::format("{}{}({});\n", indent, s.def->function_name(), args);
+        out += call(prog, s, k, indent);
         out += fmt::format("{}float fz_d{} = {};\n", indent, k, d);
     }
     out += fmt::format("{}fz_z = fz_s{}_0;\n", indent, g.z_out);
     out += fmt::format("{}fz_dr = fg_conservative_dr(fz_dr, bias, fz_d{});\n", indent, g.z_out);
+    return out;
+}
+
+// One iteration of a group carrying the Jacobian: fz_j0..2 are the columns of dz/dp over dr; each
+// node's tangent rule runs once per column (fz_t<k>_<o>_<j>). dr then grows by the columns' norm
+// and they shrink by as much, so that dr * J stays dz/dp and J stays near unit size.
+std::string jacobian_iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, const std::string& indent) {
+    const std::string orbit(type_name(prog.orbit));
+    std::string out = fmt::format("{}float fz_inv = 1.0 / fz_dr;\n", indent);
+    if (!prog.julia)
+        for (int j = 0; j < 3; ++j)
+            out += fmt::format("{}{} fz_cj{} = {}({}, {}, {}{});\n", indent, orbit, j, orbit, j == 0 ? "fz_inv" : "0.0",
+                               j == 1 ? "fz_inv" : "0.0", j == 2 ? "fz_inv" : "0.0", prog.orbit == ValueType::Vec4 ? ", 0.0" : "");
+    for (std::size_t k = 0; k < g.stages.size(); ++k) {
+        const FormulaStage& s = g.stages[k];
+        out += call(prog, s, k, indent);
+        const std::string args = arguments(prog, s);
+        for (int j = 0; j < 3; ++j) {
+            std::string decl, targs = args;
+            for (int i : s.tangent_args)
+                targs += ", " + tangent(prog, s.args[static_cast<std::size_t>(i)], j, s.input_type(static_cast<std::size_t>(i)));
+            for (int o : s.tangent_outputs) {
+                decl += fmt::format("{}{} fz_t{}_{}_{};", decl.empty() ? "" : " ", type_name(s.output_type(static_cast<std::size_t>(o))), k, o, j);
+                targs += fmt::format(", fz_t{}_{}_{}", k, o, j);
+            }
+            out += fmt::format("{}{}\n{}{}({});\n", indent, decl, indent, s.def->tangent_function_name(), targs);
+        }
+    }
+    out += fmt::format("{}fz_z = fz_s{}_0;\n", indent, g.z_out);
+    out += fmt::format("{}float fz_next = fg_conservative_dr(fz_dr, bias, fg_scale_dr(fz_dr, fg_jacobian_norm(fz_t{}_0_0, "
+                       "fz_t{}_0_1, fz_t{}_0_2)));\n",
+                       indent, g.z_out, g.z_out, g.z_out);
+    out += fmt::format("{}float fz_keep = fz_dr / max(fz_next, FG_TINY);\n", indent);
+    for (int j = 0; j < 3; ++j) out += fmt::format("{}fz_j{} = fz_t{}_0_{} * fz_keep;\n", indent, j, g.z_out, j);
+    out += fmt::format("{}fz_dr = fz_next;\n", indent);
+    return out;
+}
+
+std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, const std::string& indent) {
+    std::string out = prog.jacobian ? jacobian_iteration(prog, g, indent) : scalar_iteration(prog, g, indent);
     out += fmt::format("{}fz_r2 = dot(fz_z, fz_z);\n", indent);
     out += fmt::format("{}trap = min(trap, vec4(abs(fz_z.x), abs(fz_z.y), abs(fz_z.z), fz_r2));\n", indent);
     return out;
@@ -70,6 +132,11 @@ std::string formula_glsl(const FormulaProgram& prog) {
         out += prog.julia ? "vec3 fz_c = c.xyz;\n" : "vec3 fz_c = p;\n";
     }
     out += "float fz_dr = 1.0;\n";
+    if (prog.jacobian) {  // dz/dp starts as the identity (a 4D orbit's w does not move with p)
+        const std::string t(type_name(prog.orbit)), w = prog.orbit == ValueType::Vec4 ? ", 0.0" : "";
+        out += fmt::format("{} fz_j0 = {}(1.0, 0.0, 0.0{}), fz_j1 = {}(0.0, 1.0, 0.0{}), fz_j2 = {}(0.0, 0.0, 1.0{});\n", t, t,
+                           w, t, w, t, w);
+    }
     out += "float fz_r2 = dot(fz_z, fz_z);\n";
     out += "float fz_bail2 = bailout * bailout;\n";
     out += "trap = vec4(abs(fz_z.x), abs(fz_z.y), abs(fz_z.z), fz_r2);\n";
@@ -87,7 +154,7 @@ std::string formula_glsl(const FormulaProgram& prog) {
             out += fmt::format("{}for (; fz_i < iterations; fz_i++) {{\n", indent);
         out += indent + "    fg_count_fractal_iteration();\n";
         out += indent + "    if (fz_r2 > fz_bail2) break;\n";
-        out += indent + "    float fz_dr_in = fz_dr;\n";
+        if (!prog.jacobian) out += indent + "    float fz_dr_in = fz_dr;\n";
         out += iteration(prog, g, indent + "    ");
         out += indent + "}\n";
     }

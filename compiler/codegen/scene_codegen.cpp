@@ -137,25 +137,43 @@ void SceneCodegen::bodies(GlslWriter& w, const std::vector<bool>& want, const st
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i)
         if (skip[i]) {
             done.insert(key(ir_.nodes[i]));
-            if (ir_.nodes[i].formula)
-                for (const auto& [stage, generic] : ir_.nodes[i].formula->stage_definitions())
+            if (const auto& f = ir_.nodes[i].formula) {
+                if (f->jacobian) done.insert({"jacobian", -1});
+                for (const auto& [stage, generic] : f->stage_definitions()) {
                     done.insert(instance(*stage, generic));
+                    if (f->jacobian) done.insert({stage->tangent_function_name(), generic ? static_cast<int>(*generic) : -1});
+                }
+            }
         }
     for (std::size_t i = 0; i < ir_.nodes.size(); ++i) {
         if (!want[i]) continue;
         const IrNode& n = ir_.nodes[i];
-        if (n.formula)  // the stages its body calls, before its own function
+        if (n.formula) {  // the nodes its body calls (and their tangent rules), before its own function
+            const bool jacobian = n.formula->jacobian;
+            if (jacobian && done.insert({"jacobian", -1}).second) {
+                SourceOrigin helpers;
+                helpers.kind = SourceOrigin::Kind::Library;
+                helpers.file = "nodes/jacobian.glsl";
+                helpers.line = 1;
+                w.write(lowered(library_.jacobian()), helpers);
+                w.blank();
+            }
             for (const auto& [stage, generic] : n.formula->stage_definitions()) {
-                if (!done.insert(instance(*stage, generic)).second) continue;
+                const bool value = done.insert(instance(*stage, generic)).second;
+                const bool tangent = jacobian && done.insert({stage->tangent_function_name(), generic ? static_cast<int>(*generic) : -1}).second;
+                if (!value && !tangent) continue;
                 SourceOrigin body;
                 body.kind = SourceOrigin::Kind::Library;
                 body.file = "nodes/" + stage->glsl_path;
                 body.line = 1;
                 if (generic) w.line(fmt::format("#define T {}", type_of(*generic)), generated());
-                w.write(lowered(stage->glsl), body);
+                if (value) w.write(lowered(stage->glsl), body);
+                body.line = stage->tangent_line;
+                if (tangent) w.write(lowered(stage->tangent_glsl), body);
                 if (generic) w.line("#undef T", generated());
                 w.blank();
             }
+        }
         if (n.custom_def) {
             if (!done.insert(key(n)).second) continue;
             SourceOrigin head = from_node(n);

@@ -34,6 +34,8 @@ int component_count(ValueType t) {
 
 bool is_vector(ValueType t) { return component_count(t) > 1; }
 
+bool is_float_like(ValueType t) { return t != ValueType::Int && t != ValueType::Bool; }
+
 ValueType float_vector(int components) {
     switch (components) {
         case 2: return ValueType::Vec2;

@@ -14,6 +14,7 @@ std::string_view type_name(ValueType t);                 // "float", "vec3": als
 std::optional<ValueType> parse_type(std::string_view s);
 int component_count(ValueType t);                        // 1 for scalars
 bool is_vector(ValueType t);
+bool is_float_like(ValueType t);                         // float or a float vector: has a tangent
 ValueType float_vector(int components);                  // 1 -> Float, 3 -> Vec3
 
 // A constant: a literal from the graph, a parameter default, or a folded node output.

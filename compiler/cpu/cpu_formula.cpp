@@ -1,6 +1,8 @@
 #include "cpu_formula.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <fmt/format.h>
 
 namespace fg {
@@ -9,6 +11,7 @@ namespace glsl {
 // The prelude's guards, compiled into the twin with the node bodies (cpu_nodes.cpp).
 double fg_conservative_dr(double dr, double bias, double next);
 double fg_scale_dr(double dr, double factor);
+double fg_jacobian_norm(glm::dvec4 a, glm::dvec4 b, glm::dvec4 c);
 }  // namespace glsl
 
 namespace {
@@ -28,6 +31,7 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
             return nullptr;
         }
         auto& fns = f->functions_.emplace_back();
+        auto& tangents = f->tangents_.emplace_back();
         for (const auto& s : g.stages) {
             if (s.def->inputs.size() > kMaxStageInputs || s.def->outputs.size() > kMaxStageOutputs) {
                 diag.error(fmt::format("stage \"{}\" ({}) has more ports than the CPU twin passes ({} in, {} out)", s.id,
@@ -41,6 +45,12 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
                 return nullptr;
             }
             fns.push_back(fn);
+            tangents.push_back(program->jacobian ? find_cpu_tangent(s.def->type, s.generic) : nullptr);
+            if (program->jacobian && !tangents.back()) {
+                diag.error(fmt::format("node \"{}\" ({}) has no tangent rule in the CPU twin", s.id, s.def->type), s.pointer,
+                           node_id);
+                return nullptr;
+            }
         }
     }
     f->program_ = std::move(program);
@@ -58,7 +68,8 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4
     auto& args = scratch.args;
     auto value = [&](const FormulaArg& a) {
         switch (a.kind) {
-            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(z) : outs[a.stage][0];
+            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(z) : outs[a.stage][a.output];
+            case FormulaArg::Kind::Iteration: break;  // only Jacobian formulas read it
             case FormulaArg::Kind::C: return CpuValue::of(c);
             case FormulaArg::Kind::Input: return a.splat ? CpuValue::of(glm::dvec4(in[a.input].f())) : in[a.input];
             case FormulaArg::Kind::Constant: break;
@@ -83,6 +94,61 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4
     dr = glsl::fg_conservative_dr(dr, bias, d[g.z_out]);
 }
 
+// One pass through a group carrying the Jacobian: as formula_glsl()'s jacobian_iteration.
+void CpuFormula::iterate_jacobian(int group, const CpuValue* in, Orbit& orbit, double bias, Scratch& scratch,
+                                  TangentScratch& ts) const {
+    const FormulaProgram& prog = *program_;
+    const auto& g = prog.groups[static_cast<std::size_t>(group)];
+    const auto& fns = functions_[static_cast<std::size_t>(group)];
+    const auto& tangent_fns = tangents_[static_cast<std::size_t>(group)];
+    auto& outs = scratch.outs;
+    auto& args = scratch.args;
+    auto& tangents = ts.tangents;
+    auto value = [&](const FormulaArg& a) {
+        switch (a.kind) {
+            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(orbit.z) : outs[a.stage][a.output];
+            case FormulaArg::Kind::C: return CpuValue::of(orbit.c);
+            case FormulaArg::Kind::Iteration: return CpuValue::of(static_cast<double>(orbit.iteration));
+            case FormulaArg::Kind::Input: return a.splat ? CpuValue::of(glm::dvec4(in[a.input].f())) : in[a.input];
+            case FormulaArg::Kind::Constant: break;
+        }
+        return CpuValue::of(a.constant);
+    };
+    const double inv = 1.0 / orbit.dr;
+    auto tangent = [&](const FormulaArg& a, int j) {
+        switch (a.kind) {
+            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(orbit.columns[j]) : tangents[a.stage][a.output][j];
+            case FormulaArg::Kind::C:
+                if (!prog.julia) {
+                    glm::dvec4 e(0.0);
+                    e[j] = inv;
+                    return CpuValue::of(e);
+                }
+                break;
+            default: break;
+        }
+        return CpuValue{};
+    };
+    for (std::size_t k = 0; k < g.stages.size(); ++k) {
+        const FormulaStage& s = g.stages[k];
+        for (std::size_t a = 0; a < s.args.size(); ++a) args[a] = value(s.args[a]);
+        fns[k](args, outs[k]);
+        for (int j = 0; j < 3; ++j) {
+            for (std::size_t t = 0; t < s.tangent_args.size(); ++t)
+                ts.args[t] = tangent(s.args[static_cast<std::size_t>(s.tangent_args[t])], j);
+            tangent_fns[k](args, ts.args, ts.out);
+            for (std::size_t t = 0; t < s.tangent_outputs.size(); ++t) tangents[k][s.tangent_outputs[t]][j] = ts.out[t];
+        }
+    }
+    orbit.z = outs[g.z_out][0].v4();
+    const auto& cols = tangents[g.z_out][0];
+    const double next =
+        glsl::fg_conservative_dr(orbit.dr, bias, glsl::fg_scale_dr(orbit.dr, glsl::fg_jacobian_norm(cols[0].v, cols[1].v, cols[2].v)));
+    const double keep = orbit.dr / std::max(next, kTiny);
+    for (int j = 0; j < 3; ++j) orbit.columns[j] = cols[j].v * keep;
+    orbit.dr = next;
+}
+
 void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     const FormulaProgram& prog = *program_;
     // A 3D orbit is carried with w = 0 (3D stages write 0 there), a quaternion one from (p, w).
@@ -97,11 +163,22 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     glm::dvec4 trap(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2);
     int i = 0;
     Scratch scratch;
+    // A Jacobian formula's columns start as the identity (a 4D orbit's w does not move with p).
+    std::unique_ptr<TangentScratch> tangents;
+    Orbit orbit{z, c, {glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0)}, 1.0, 0};
+    if (prog.jacobian) tangents = std::make_unique<TangentScratch>();
     do {
         for (const auto& seg : prog.segments)
             for (int n = 0; (seg.count == 0 || n < seg.count) && i < iterations; ++n, ++i) {
                 if (r2 > bail2) break;
-                iterate(seg.group, in, c, z, dr, bias, scratch);
+                if (prog.jacobian) {
+                    orbit.iteration = i;
+                    iterate_jacobian(seg.group, in, orbit, bias, scratch, *tangents);
+                    z = orbit.z;
+                    dr = orbit.dr;
+                } else {
+                    iterate(seg.group, in, c, z, dr, bias, scratch);
+                }
                 r2 = glm::dot(z, z);
                 trap = glm::min(trap, glm::dvec4(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2));
             }

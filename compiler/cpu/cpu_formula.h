@@ -25,6 +25,7 @@ public:
 private:
     std::shared_ptr<const FormulaProgram> program_;
     std::vector<std::vector<CpuNodeFunction>> functions_;   // per group, per stage
+    std::vector<std::vector<CpuTangentFunction>> tangents_; // per group, per stage (Jacobian formulas)
 
     // What one pass through a group writes: each stage's outputs and derivative. Made once per
     // evaluation, not per iteration (4 KB to clear).
@@ -34,6 +35,20 @@ private:
         CpuValue args[kMaxStageInputs];
     };
     void iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias, Scratch& s) const;
+
+    // A Jacobian formula's pass: `columns` are dz/dp over dr, moved by each node's tangent rule.
+    struct Orbit {
+        glm::dvec4 z, c;
+        glm::dvec4 columns[3];
+        double dr;
+        int iteration;
+    };
+    struct TangentScratch {
+        CpuValue tangents[kMaxStages][kMaxStageOutputs][3];
+        CpuValue args[kMaxStageInputs];
+        CpuValue out[kMaxStageOutputs];
+    };
+    void iterate_jacobian(int group, const CpuValue* in, Orbit& orbit, double bias, Scratch& s, TangentScratch& t) const;
 };
 
 }  // namespace fg

@@ -11,14 +11,19 @@
 namespace fg {
 
 using CpuNodeFunction = void (*)(const CpuValue* inputs, CpuValue* outputs);
+// A node's tangent rule: `tangents` holds one tangent per input of its rule, `out` receives one per
+// output of its rule (graph/node_definition.h, TangentRule).
+using CpuTangentFunction = void (*)(const CpuValue* inputs, const CpuValue* tangents, CpuValue* out);
 
 struct CpuNodeEntry {
     std::string_view type;                // "math.add"
     std::optional<ValueType> generic;     // the T instance, for generic nodes
     CpuNodeFunction function;
+    CpuTangentFunction tangent;           // nullptr: the node has no tangent rule
 };
 
 std::span<const CpuNodeEntry> cpu_node_entries();  // generated
 CpuNodeFunction find_cpu_node(std::string_view type, std::optional<ValueType> generic);
+CpuTangentFunction find_cpu_tangent(std::string_view type, std::optional<ValueType> generic);
 
 }  // namespace fg

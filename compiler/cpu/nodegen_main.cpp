@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
 
     std::string bodies, wrappers, entries;
     for (const auto* def : lib.all()) {
-        if (def->builtin_input || def->generated_body()) continue;
+        if (!def->has_glsl_body()) continue;
         std::vector<std::optional<fg::ValueType>> instances;
         if (def->generic.empty()) instances.push_back(std::nullopt);
         for (auto t : def->generic) instances.push_back(t);
@@ -90,14 +90,34 @@ int main(int argc, char** argv) {
             wrappers += fmt::format("void w_{}(const CpuValue* in, CpuValue* out) {{\n{}    glsl::{}({});\n{}}}\n", name,
                                     locals, def->function_name(), call, stores);
             wrappers += "\n";
-            entries += fmt::format("    {{\"{}\", {}, &w_{}}},\n", def->type,
+            std::string tangent = "nullptr";
+            if (!def->tangent.empty()) {
+                // inputs, the rule's input tangents, then its output tangents: as the GLSL signature.
+                std::string targs, tlocals, tstores;
+                for (std::size_t i = 0; i < def->inputs.size(); ++i)
+                    targs += fmt::format("{}in[{}].{}", i ? ", " : "", i, accessor(concrete(def->inputs[i].type)));
+                for (std::size_t k = 0; k < def->tangent.inputs.size(); ++k)
+                    targs += fmt::format("{}d_in[{}].{}", targs.empty() ? "" : ", ", k,
+                                         accessor(concrete(def->find_input(def->tangent.inputs[k])->type)));
+                for (std::size_t k = 0; k < def->tangent.outputs.size(); ++k) {
+                    tlocals += fmt::format("    {} d{}{{}};\n",
+                                           cpp_type(concrete(def->find_output(def->tangent.outputs[k])->type)), k);
+                    targs += fmt::format(", d{}", k);
+                    tstores += fmt::format("    d_out[{}] = CpuValue::of(d{});\n", k, k);
+                }
+                wrappers += fmt::format("void t_{}(const CpuValue* in, const CpuValue* d_in, CpuValue* d_out) {{\n{}    "
+                                        "glsl::{}({});\n{}}}\n\n",
+                                        name, tlocals, def->tangent_function_name(), targs, tstores);
+                tangent = "&t_" + name;
+            }
+            entries += fmt::format("    {{\"{}\", {}, &w_{}, {}}},\n", def->type,
                                    inst ? fmt::format("ValueType::{}", [&] {
                                        std::string s(fg::type_name(*inst));
                                        s[0] = static_cast<char>(std::toupper(s[0]));
                                        return s;
                                    }())
                                         : "std::nullopt",
-                                   name);
+                                   name, tangent);
         }
     }
 
@@ -113,6 +133,7 @@ int main(int argc, char** argv) {
 namespace fg::glsl {{
 #define float double
 #include "prelude.glsl"
+#include "jacobian.glsl"
 {}#undef float
 }}  // namespace fg::glsl
 

@@ -10,11 +10,12 @@ namespace fg {
 struct GraphNode;
 struct Binding;
 
-// Stages whose z inputs chain from the point entering the group to `z`, the point it leaves with.
+// Stages whose z inputs chain from the point entering the group to `z`, the point it leaves with,
+// and maths nodes between them (they read the entering point from a stage.orbit node).
 struct FormulaGroup {
     std::string name;
     std::vector<GraphNode> nodes;
-    std::string z_node;        // the stage whose z leaves the group
+    std::string z_node;        // the node whose first output leaves the group as z
     std::string pointer;       // /nodes/2/formula/groups/0
 };
 
@@ -31,6 +32,7 @@ struct FormulaBody {
     bool repeat = false;                    // after the last segment, start the schedule again
     bool julia = false;                     // c is the node's input c, not the sample point
     std::string estimate;                   // "linear", "log", "box", "sheet", or "" (the compiler infers it)
+    std::string derivative;                 // "scalar", "jacobian", or "" (Jacobian when maths nodes are in it)
     double sheet_radius = 100.0;            // "sheet": the radius of the seed disc
     double linear_radius = 0.0;             // "linear": (|z| - this) / dr
     bool filled = false;                    // a point whose orbit never escapes is inside (distance <= 0)

@@ -257,9 +257,10 @@ private:
                 diag_.error(fmt::format("unknown node type \"{}\"{}", n.type,
                                         near.empty() ? " (fgc nodes lists them)" : "; did you mean " + join(near) + "?"),
                             ptr + "/type", who);
-            } else if (in_body != def->is_stage()) {
-                diag_.error(in_body ? fmt::format("a formula body holds stage.* nodes, and {} is not one (fgc nodes "
-                                                  "stage lists them)", n.type)
+            } else if (in_body ? !def->fits_in_formula_body() : def->is_stage()) {
+                diag_.error(in_body ? fmt::format("a formula body holds stage.* nodes and maths nodes with a tangent rule, "
+                                                  "and {} is neither (fgc nodes stage and fgc nodes math list them)",
+                                                  n.type)
                                     : fmt::format("{} is a formula stage: it works only inside the body of a {} node",
                                                   n.type, kFormulaNodeType),
                             ptr + "/type", who);
@@ -304,7 +305,7 @@ private:
         }
         if (def || n.custom) {
             for (const auto& p : def ? def->inputs : n.custom->inputs)
-                if (p.required() && !n.inputs.count(p.name) && !(in_body && (p.name == "z" || p.name == "c")))
+                if (p.required() && !n.inputs.count(p.name) && !(in_body && def && def->is_stage() && (p.name == "z" || p.name == "c")))
                     diag_.error(fmt::format("missing required input \"{}\" ({}) of {}", p.name, p.type.text(), n.type),
                                 ptr + "/inputs", who);
         }
@@ -316,7 +317,9 @@ private:
     std::shared_ptr<const FormulaBody> read_formula(const json& fj, const std::string& ptr, const std::string& id) {
         JsonFieldReader fields = node_fields(id);
         if (!fields.is_object(fj, ptr)) return nullptr;
-        fields.unknown_keys(fj, ptr, {"groups", "schedule", "repeat", "julia", "estimate", "sheet_radius", "linear_radius", "filled", "bound_radius", "comment"},
+        fields.unknown_keys(fj, ptr,
+                            {"groups", "schedule", "repeat", "julia", "estimate", "derivative", "sheet_radius",
+                             "linear_radius", "filled", "bound_radius", "comment"},
                             "formula field");
         auto body = std::make_shared<FormulaBody>();
         body->pointer = ptr;
@@ -324,6 +327,7 @@ private:
         fields.optional(fj, "repeat", ptr, body->repeat);
         fields.optional(fj, "julia", ptr, body->julia);
         fields.optional(fj, "estimate", ptr, body->estimate, Choices{"linear", "log", "box", "sheet"});
+        fields.optional(fj, "derivative", ptr, body->derivative, Choices{"scalar", "jacobian"});
         fields.optional(fj, "sheet_radius", ptr, body->sheet_radius, NumberRange{0.0});
         fields.optional(fj, "linear_radius", ptr, body->linear_radius, NumberRange{0.0});
         fields.optional(fj, "filled", ptr, body->filled);
@@ -381,45 +385,55 @@ private:
         return body;
     }
 
-    // Within a group a stage's z comes from the point entering the group or from another stage's z,
-    // and every other input is a literal or a $param.
+    // Within a group every wire comes from a node of the same group, names one of its outputs, and
+    // no node depends on itself. Types and what moves with the orbit are checked when the body is
+    // resolved (ir/formula_program.cpp).
     void check_group(const FormulaGroup& group, const std::string& id) {
         std::map<std::string, const GraphNode*> by_id;
         for (const auto& n : group.nodes) by_id[n.id] = &n;
         if (!group.z_node.empty() && !by_id.count(group.z_node))
             diag_.error(fmt::format("\"z\" names node \"{}\", which is not in this group", group.z_node),
                         group.pointer + "/z", id);
+        bool wiring_ok = true;
         for (const auto& n : group.nodes)
             for (const auto& [port, b] : n.inputs) {
                 if (b.kind != Binding::Kind::Node) continue;
-                if (port != "z") {
-                    diag_.error(fmt::format("input \"{}\" of a stage takes a literal or a $param; only \"z\" takes another "
-                                            "stage's output",
-                                            port),
-                                b.pointer, id);
-                } else if (!by_id.count(b.node)) {
-                    diag_.error(fmt::format("\"{}\" is not a stage of this group (leave z unbound for the point entering "
-                                            "the group)",
+                auto src = by_id.find(b.node);
+                if (src == by_id.end()) {
+                    diag_.error(fmt::format("\"{}\" is not a node of this group (leave a stage's z unbound for the point "
+                                            "entering the group, or read it from a stage.orbit node)",
                                             b.node),
                                 b.pointer, id);
-                } else if (!b.port.empty() && b.port != "z") {
-                    diag_.error(fmt::format("a stage's z takes another stage's \"z\", not \"{}\"", b.port), b.pointer, id);
+                    wiring_ok = false;
+                } else if (const NodeDefinition* d = lib_.find(src->second->type); d && !b.port.empty() && !d->find_output(b.port)) {
+                    std::vector<std::string> names;
+                    for (const auto& o : d->outputs) names.push_back(o.name);
+                    diag_.error(fmt::format("{} has no output \"{}\"; its outputs are: {}", d->type, b.port, join(names)),
+                                b.pointer, id);
+                    wiring_ok = false;
                 }
             }
-        // Following z inputs back from any stage must end at the group's entry point.
-        for (const auto& n : group.nodes) {
-            std::set<std::string> seen{n.id};
-            for (const GraphNode* at = &n;;) {
-                auto z = at->inputs.find("z");
-                if (z == at->inputs.end() || z->second.kind != Binding::Kind::Node || !by_id.count(z->second.node)) break;
-                if (!seen.insert(z->second.node).second) {
-                    diag_.error(fmt::format("cycle: stage \"{}\" takes its z from itself through the chain", n.id),
-                                z->second.pointer, id);
-                    return;
+        if (!wiring_ok) return;
+        // Depth-first: a node met again while its own inputs are being followed closes a cycle.
+        std::map<std::string, int> state;  // 1: being followed, 2: done
+        std::function<bool(const GraphNode&)> visit = [&](const GraphNode& n) {
+            state[n.id] = 1;
+            for (const auto& [port, b] : n.inputs) {
+                if (b.kind != Binding::Kind::Node) continue;
+                int& s = state[b.node];
+                if (s == 1) {
+                    diag_.error(fmt::format("cycle: node \"{}\" takes its input \"{}\" from itself through the chain",
+                                            n.id, port),
+                                b.pointer, id);
+                    return false;
                 }
-                at = by_id[z->second.node];
+                if (s == 0 && !visit(*by_id[b.node])) return false;
             }
-        }
+            state[n.id] = 2;
+            return true;
+        };
+        for (const auto& n : group.nodes)
+            if (state[n.id] == 0 && !visit(n)) return;
     }
 
     void read_outputs(const json& doc, Graph& g) {

@@ -58,9 +58,22 @@ struct StageDerivative {
         Power,      // not conformal: dr *= the output `factor`, the conventional scalar estimate the bias
                     // guards; a formula with such a stage uses the logarithmic distance estimate
         AddC,       // z + weight * c: dr += |input `weight`| when c is the sample point
+        Orbit,      // stage.orbit: no code; the compiler supplies the point entering the group, c and
+                    // the iteration index to the body's other nodes
     } rule = Rule::None;
     std::string factor;   // Conformal, Bound, Power: the output holding the factor
     std::string weight;   // AddC: the input holding the weight
+};
+
+// A node's dual-number rule: its body file also defines <function_name>_tangent(every input,
+// then the tangent of each input in `inputs`, then OUT the tangent of each output in `outputs`):
+// how a small change of those inputs moves those outputs. Formulas with maths nodes run it on
+// three tangents at once, a running Jacobian (ir/formula_program.h). Inputs left out are held
+// constant: a body must not feed them anything that moves with the orbit.
+struct TangentRule {
+    std::vector<std::string> inputs;
+    std::vector<std::string> outputs;
+    bool empty() const { return outputs.empty(); }
 };
 
 enum class NodeContext {
@@ -79,9 +92,12 @@ struct NodeDefinition {
     std::map<std::string, std::string> lipschitz;   // output name -> rule (see analysis/lipschitz_rule.h)
     std::string running_derivative;                 // the dr update the bias guards; non-empty for DE fractals
     StageDerivative derivative;                     // stage.* nodes: how z's derivative moves
+    TangentRule tangent;                            // how small changes move through it (may be empty)
     std::vector<Effect> effects;                    // using the node adds these
     nlohmann::json example;                         // an example node ("inputs": {...}) for the docs
     std::string glsl;                               // the body: one function, function_name()
+    std::string tangent_glsl;                       // the tangent rule's function, last in the body file
+    int tangent_line = 1;                           // where it starts there
     std::string json_path;                          // where it came from, for messages
     std::string glsl_path;
     bool builtin_input = false;                     // input.* nodes: code generation supplies them
@@ -93,6 +109,12 @@ struct NodeDefinition {
     std::string namespace_name() const;             // "fractal"
     bool generated_body() const { return type == "fractal.formula"; }  // its GLSL comes from its body graph
     bool is_stage() const { return derivative.rule != StageDerivative::Rule::None; }
+    // What a formula body may hold: stages, and nodes with a tangent rule (maths).
+    bool fits_in_formula_body() const { return is_stage() || !tangent.empty(); }
+    bool has_glsl_body() const {
+        return !builtin_input && !generated_body() && derivative.rule != StageDerivative::Rule::Orbit;
+    }
+    std::string tangent_function_name() const { return function_name() + "_tangent"; }
 };
 
 }  // namespace fg

@@ -27,8 +27,15 @@ void read_stage_derivative(const json& d, NodeDefinition& def, JsonFieldReader& 
     using Rule = StageDerivative::Rule;
     r.unknown_keys(d, "/derivative", {"rule", "factor", "weight"});
     std::string rule;
-    if (!r.required(d, "rule", "/derivative", rule, Choices{"isometry", "conformal", "bound", "power", "add_c"})) return;
+    if (!r.required(d, "rule", "/derivative", rule,
+                    Choices{"isometry", "conformal", "bound", "power", "add_c", "orbit"}))
+        return;
     auto& sd = def.derivative;
+    if (rule == "orbit") {  // stage.orbit: outputs only, supplied by the compiler
+        sd.rule = Rule::Orbit;
+        if (!def.inputs.empty()) r.error("an orbit source has no inputs", "/inputs");
+        return;
+    }
     sd.rule = rule == "isometry"    ? Rule::Isometry
               : rule == "conformal" ? Rule::Conformal
               : rule == "bound"     ? Rule::Bound
@@ -61,6 +68,27 @@ void read_stage_derivative(const json& d, NodeDefinition& def, JsonFieldReader& 
         if (t != ValueType::Vec3 && t != ValueType::Vec4) r.error("a generic stage works on vec3 and vec4 orbits", "/generic");
 }
 
+// "tangent": {"inputs": [...], "outputs": [...]}: ports of float and vector types.
+void read_tangent_rule(const json& t, NodeDefinition& def, JsonFieldReader& r) {
+    r.unknown_keys(t, "/tangent", {"inputs", "outputs"});
+    for (const char* side : {"inputs", "outputs"}) {
+        const bool is_input = side == std::string("inputs");
+        const json* names = r.array_field(t, side, "/tangent", true);
+        if (!names) continue;
+        auto& list = is_input ? def.tangent.inputs : def.tangent.outputs;
+        for (std::size_t i = 0; i < names->size(); ++i) {
+            std::string at = fmt::format("/tangent/{}/{}", side, i), name;
+            if (!r.read((*names)[i], at, name)) continue;
+            const PortDefinition* port = is_input ? def.find_input(name) : def.find_output(name);
+            if (!port) r.error(fmt::format("no {} \"{}\"", is_input ? "input" : "output", name), at);
+            else if (port->type.concrete && !is_float_like(*port->type.concrete))
+                r.error(fmt::format("\"{}\" is {}: only float and vector ports have tangents", name, port->type.text()), at);
+            else list.push_back(name);
+        }
+    }
+    if (def.tangent.outputs.empty()) r.error("a tangent rule names at least one output", "/tangent/outputs");
+}
+
 }  // namespace
 
 std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_path, std::string_view json_text,
@@ -80,7 +108,7 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
     });
     if (!r.is_object(j, "")) return nullptr;
     r.unknown_keys(j, "", {"type", "summary", "doc", "context", "inputs", "outputs", "generic", "lipschitz",
-                           "running_derivative", "derivative", "effects", "example"});
+                           "running_derivative", "derivative", "tangent", "effects", "example"});
 
     auto def = std::make_unique<NodeDefinition>();
     def->json_path = json_path;
@@ -135,6 +163,7 @@ std::unique_ptr<NodeDefinition> parse_node_definition(const std::string& json_pa
         if (!has_bias) r.error("a node with a running derivative needs an input with \"knob\": \"bias\"", "/inputs");
     }
     if (const json* d = r.object_field(j, "derivative", "")) read_stage_derivative(*d, *def, r);
+    if (const json* t = r.object_field(j, "tangent", "")) read_tangent_rule(*t, *def, r);
     if (def->namespace_name() == "stage" && !def->is_stage())
         r.error("a stage.* node declares its \"derivative\": {\"rule\": \"isometry\" | \"conformal\" | \"bound\" | \"power\" | \"add_c\"}", "");
     if (const json* effects = r.array_field(j, "effects", ""))
@@ -156,6 +185,7 @@ NodeLibrary NodeLibrary::from_files(std::span<const EmbeddedFile> files, Diagnos
         std::string path(f.path);
         if (path.ends_with("prelude.glsl")) lib.prelude_ += std::string(f.text);
         else if (path.ends_with("double_math.glsl")) lib.double_math_ += std::string(f.text);
+        else if (path.ends_with("jacobian.glsl")) lib.jacobian_ += std::string(f.text);
         else if (path.ends_with(".glsl")) bodies[path.substr(0, path.size() - 5)] = f.text;
     }
     for (const auto& f : files) {
@@ -173,7 +203,7 @@ void NodeLibrary::add_definition(const std::string& json_path, std::string_view 
                                  std::string glsl_text, Diagnostics& diag) {
     auto def = parse_node_definition(json_path, json_text, diag);
     if (!def) return;
-    if (!def->builtin_input && !def->generated_body()) {
+    if (def->has_glsl_body()) {
         if (glsl_text.empty()) {
             diag.error(fmt::format("{}: no GLSL body {} beside the definition", json_path, glsl_path));
             return;
@@ -181,6 +211,19 @@ void NodeLibrary::add_definition(const std::string& json_path, std::string_view 
         if (glsl_text.find(def->function_name()) == std::string::npos) {
             diag.error(fmt::format("{}: the body does not define {}()", glsl_path, def->function_name()));
             return;
+        }
+        if (!def->tangent.empty()) {
+            // Kept apart, so that only formulas carrying a Jacobian compile it.
+            std::size_t at = glsl_text.find("void " + def->tangent_function_name() + "(");
+            if (at == std::string::npos) {
+                diag.error(fmt::format("{}: the definition has a tangent rule, and the body does not define {}() last",
+                                       glsl_path, def->tangent_function_name()));
+                return;
+            }
+            def->tangent_glsl = glsl_text.substr(at);
+            def->tangent_line = 1 + static_cast<int>(std::count(glsl_text.begin(), glsl_text.begin() + static_cast<long>(at), '\n'));
+            glsl_text.erase(glsl_text.find_last_not_of(" \n", at == 0 ? 0 : at - 1) + 1);
+            glsl_text += "\n";
         }
     }
     def->glsl = std::move(glsl_text);

@@ -31,6 +31,8 @@ public:
     const std::string& prelude() const { return prelude_; }
     // nodes/double_math.glsl: sin, pow, ... in double, for scenes compiled with precision "double".
     const std::string& double_math() const { return double_math_; }
+    // nodes/jacobian.glsl: helpers of formulas that carry a running Jacobian.
+    const std::string& jacobian() const { return jacobian_; }
     // Types whose name is close to `type`, for "did you mean" hints.
     std::vector<std::string> similar(const std::string& type) const;
 
@@ -40,6 +42,7 @@ private:
     std::map<std::string, std::unique_ptr<NodeDefinition>> defs_;
     std::string prelude_;
     std::string double_math_;
+    std::string jacobian_;
 };
 
 // Parse one definition; reports problems against json_path.

@@ -21,31 +21,39 @@ enum FormulaPort { kFormulaP = 0, kFormulaC, kFormulaW, kFormulaIterations, kFor
 
 struct FormulaArg {
     enum class Kind {
-        Orbit,     // the stage's z: the point entering the group, or stage `stage`'s z
-        C,         // the formula's c: the sample point, or the Julia constant
-        Constant,  // a literal, or the port's default
-        Input,     // the formula node's input `input` (a graph parameter)
+        Orbit,      // `stage` < 0: the point entering the group; else output `output` of node `stage`
+        C,          // the formula's c: the sample point, or the Julia constant
+        Iteration,  // the iteration index (float)
+        Constant,   // a literal, or the port's default
+        Input,      // the formula node's input `input` (a graph parameter)
     } kind = Kind::Constant;
     int stage = -1;
+    int output = 0;
     Constant constant;
     int input = -1;
     int splat = 0;   // Input: a float parameter feeding a vector port of this many components
 };
 
+// A node of the body: a stage or a maths node, in evaluation order.
 struct FormulaStage {
     std::string id;
     std::string pointer;
     const NodeDefinition* def = nullptr;
-    std::optional<ValueType> generic;   // a generic stage's T: the orbit's type
+    std::optional<ValueType> generic;   // a generic node's T (a stage's is the orbit's type)
     std::vector<FormulaArg> args;   // one per def->inputs
     int factor_output = -1;         // Conformal and Power stages: the output holding the factor
     int weight_arg = -1;            // AddC stages: the argument holding the weight
+    std::vector<int> tangent_args;      // the inputs of its tangent rule, as indices into args
+    std::vector<int> tangent_outputs;   // the outputs of its tangent rule, as indices into outputs
+
+    ValueType output_type(std::size_t o) const;
+    ValueType input_type(std::size_t i) const;
 };
 
 struct FormulaGroupProgram {
     std::string name;
-    std::vector<FormulaStage> stages;   // each stage's z comes from an earlier one or the entry
-    int z_out = 0;                      // the stage whose z leaves the group
+    std::vector<FormulaStage> stages;   // each node after the nodes it reads
+    int z_out = 0;                      // the node whose first output leaves the group as z
 };
 
 struct FormulaSegmentProgram {
@@ -59,6 +67,11 @@ struct FormulaProgram {
     std::vector<FormulaSegmentProgram> segments;
     bool repeat = false;
     bool julia = false;
+    // How dr is carried. Scalar: each stage's declared factor times dr (exact for conformal stages).
+    // Jacobian: every node's tangent rule moves three tangents, the columns of dz/dp over dr, and
+    // dr grows by their norm each iteration (the largest stretch of any direction): maths nodes
+    // need it, and it is exact for any smooth composition within an iteration.
+    bool jacobian = false;
     // The distance estimate: the last orbit point's distance to a seed shape, over dr.
     enum class Estimate {
         Linear,  // (|z| - linear_radius) / dr: folding and IFS formulas
@@ -74,7 +87,7 @@ struct FormulaProgram {
 
     // The derivative the compiler composed, in words, for fgc info and the manifest.
     std::string describe() const;
-    // Every stage the body calls, once per definition and generic instance.
+    // Every node the body calls, once per definition and generic instance.
     std::vector<std::pair<const NodeDefinition*, std::optional<ValueType>>> stage_definitions() const;
 };
 

@@ -199,9 +199,14 @@ std::string stage_rule_text(const NodeDefinition& d) {
         case StageDerivative::Rule::Bound: return fmt::format("norm bound (dr times output {}, the largest stretch)", d.derivative.factor);
         case StageDerivative::Rule::Power: return fmt::format("power map (dr times output {}; log estimate)", d.derivative.factor);
         case StageDerivative::Rule::AddC: return fmt::format("add c (dr plus |{}| when c is the point)", d.derivative.weight);
+        case StageDerivative::Rule::Orbit: return "none: the compiler supplies its outputs";
         case StageDerivative::Rule::None: break;
     }
     return {};
+}
+
+std::string tangent_rule_text(const NodeDefinition& d) {
+    return fmt::format("tangent of {} through {}", join(d.tangent.outputs), join(d.tangent.inputs));
 }
 
 std::string markdown_node(const NodeDefinition& d) {
@@ -237,6 +242,8 @@ std::string markdown_node(const NodeDefinition& d) {
     if (!d.running_derivative.empty())
         s += fmt::format("Running derivative (guarded by the conservative bias): `{}`\n\n", d.running_derivative);
     if (d.is_stage()) s += fmt::format("Derivative, as a formula stage: {}\n\n", stage_rule_text(d));
+    if (!d.tangent.empty())
+        s += fmt::format("Dual-number rule, in a formula that carries the Jacobian: {}\n\n", tangent_rule_text(d));
     if (!d.effects.empty()) {
         std::vector<std::string> e;
         for (auto x : d.effects) e.emplace_back(effect_name(x));
@@ -283,6 +290,7 @@ int nodes(const Common& c, const std::string& type, bool markdown) {
         for (const auto& [out, rule] : d->lipschitz) fmt::print("  lipschitz {}: {}\n", out, rule);
         if (!d->running_derivative.empty()) fmt::print("  running derivative: {}\n", d->running_derivative);
         if (d->is_stage()) fmt::print("  derivative: {}\n", stage_rule_text(*d));
+        if (!d->tangent.empty()) fmt::print("  tangent: {}\n", tangent_rule_text(*d));
         return 0;
     }
     if (markdown) {

@@ -2,3 +2,8 @@ void fg_math_add(T a, T b, OUT(T) value)
 {
     value = a + b;
 }
+
+void fg_math_add_tangent(T a, T b, T d_a, T d_b, OUT(T) d_value)
+{
+    d_value = d_a + d_b;
+}

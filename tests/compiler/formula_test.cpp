@@ -22,7 +22,7 @@ using Rule = StageDerivative::Rule;
 std::vector<const NodeDefinition*> stages() {
     std::vector<const NodeDefinition*> out;
     for (const auto* d : NodeLibrary::builtin().all())
-        if (d->is_stage()) out.push_back(d);
+        if (d->is_stage() && d->derivative.rule != Rule::Orbit) out.push_back(d);
     return out;
 }
 
@@ -281,8 +281,14 @@ TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {
                                       {"name": "b", "nodes": [{"id": "t", "type": "stage.scale", "inputs": {"z": "s", "scale": "s.z"}}]}],
                            "schedule": [{"group": "a", "count": 1}, {"group": "b"}]})");
     diag = fg::test::check_front(formula_graph(body));
-    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/1/nodes/0/inputs/z", "f", "not a stage of this group"));
-    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/1/nodes/0/inputs/scale", "f", "takes a literal or a $param"));
+    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/1/nodes/0/inputs/z", "f", "not a node of this group"));
+    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/1/nodes/0/inputs/scale", "f", "not a node of this group"));
+
+    // A stage's parameter taken from the orbit: a stage's derivative rule covers only its z.
+    body = json::parse(R"({"derivative": "scalar", "groups": [{"name": "a", "nodes": [{"id": "s", "type": "stage.abs_fold"},
+        {"id": "t", "type": "stage.translate", "inputs": {"z": "s", "offset": "s"}}]}]})");
+    diag = fg::test::check_front(formula_graph(body));
+    EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/1/inputs/offset", "f", "covers only its z"));
 
     // A cycle through z, and an unknown parameter.
     body = json::parse(R"({"groups": [{"name": "a", "nodes": [
