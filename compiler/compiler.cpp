@@ -151,8 +151,9 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     EffectSet effects = find_effects(*ir);
     result.lipschitz = analyse_lipschitz(*ir, diag);
     if (diag.has_errors()) return std::nullopt;
-    // The calibrated step factor (fgc calibrate) shortens every step beyond 1 / L.
-    auto spec = assign_specialization(*ir, ir->scene.step_factor / result.lipschitz.bound);
+    // The calibrated step factor (fgc calibrate) shortens every step beyond 1 / L; the step fraction
+    // too, and the shaders' hit tests divide it back out.
+    auto spec = assign_specialization(*ir, ir->scene.step_factor * ir->scene.step_fraction / result.lipschitz.bound);
     result.times.analysis_ms = clock.lap();
 
     PackManifest& m = result.manifest;
@@ -168,6 +169,10 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     if (ir->scene.step_factor != 1.0)
         m.lipschitz_notes.push_back(fmt::format("step factor {:g} from the graph (fgc calibrate): step scale {:g}",
                                                 ir->scene.step_factor, ir->scene.step_factor / result.lipschitz.bound));
+    if (ir->scene.step_fraction != 1.0)
+        m.lipschitz_notes.push_back(fmt::format("step fraction {:g} from the graph: steps advance that share of the "
+                                                "estimate, hit tests read all of it",
+                                                ir->scene.step_fraction));
     m.period = analyse_periodicity(*ir).period;
     m.scene = ir->scene;
     m.precision = ir->scene.double_precision ? "double" : "float";

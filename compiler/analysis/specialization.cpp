@@ -1,5 +1,7 @@
 #include "specialization.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "common/spec_constants.h"
@@ -13,7 +15,10 @@ SpecializationLayout assign_specialization(IrGraph& ir, double step_scale) {
         s.id = k.id;
         s.name = std::string(k.name);
         s.type = k.type;
-        s.value = k.name == "step_scale" ? step_scale : k.value;
+        s.value = k.name == "step_scale" ? step_scale : k.name == "step_fraction" ? ir.scene.step_fraction : k.value;
+        // Shorter steps need more of them to reach the same surface.
+        if (k.name == "max_steps" || k.name == "cone_steps" || k.name == "fine_steps" || k.name == "reproject_fixup_steps")
+            s.value = std::min(k.max, std::ceil(k.value / ir.scene.step_fraction));
         s.min = k.min;
         s.max = k.max;
         s.doc = std::string(k.doc);

@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 19> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 20> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -64,6 +64,9 @@ inline constexpr std::array<GlobalKnob, 19> kGlobalKnobs{{
     {19, "lane_burst", "FG_LANE_BURST", ValueType::Float, 0.875, 0.01, 1.0,
      "persistent lanes march on while this share of a subgroup's lanes has a ray, then refill the idle ones "
      "(lower refills less often; a GPU's wider subgroups may want another share than lavapipe's 8 lanes)"},
+    {20, "step_fraction", "FG_STEP_FRACTION", ValueType::Float, 1.0, 0.01, 1.0,
+     "each march step advances this fraction of the estimate (already in step_scale) while hit tests read "
+     "the whole estimate: shorter steps without a fatter surface (Mandelbulber's DE factor)"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -73,7 +73,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     const json& j = *jp;
     if (!r.is_object(j, ptr)) return s;
     r.unknown_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "vignette", "foveation", "bounds",
-                            "max_distance", "exposure", "scale", "locomotion", "step_factor", "precision"},
+                            "max_distance", "exposure", "scale", "locomotion", "step_factor", "step_fraction", "precision"},
                    "scene setting");
     if (const json* c = r.block(j, "camera", ptr, {"position", "target", "up", "fov_deg"})) {
         std::string p = ptr + "/camera";
@@ -146,6 +146,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     r.optional(j, "exposure", ptr, s.exposure, NumberRange{0.0, 1e4});
     r.optional(j, "scale", ptr, s.world_scale, NumberRange{1e-12, 1e12});
     r.optional(j, "step_factor", ptr, s.step_factor, NumberRange{0.05, 1.0});
+    r.optional(j, "step_fraction", ptr, s.step_fraction, NumberRange{0.01, 1.0});
     std::string precision;
     if (r.optional(j, "precision", ptr, precision, Choices{"float", "double"}))
         s.double_precision = precision == "double";
@@ -187,6 +188,7 @@ json scene_settings_to_json(const SceneSettings& s) {
     j["exposure"] = s.exposure;
     j["scale"] = s.world_scale;
     j["step_factor"] = s.step_factor;
+    if (s.step_fraction != 1.0) j["step_fraction"] = s.step_fraction;
     if (s.double_precision) j["precision"] = "double";
     j["locomotion"] = {{"speed_per_distance", s.locomotion.speed_per_distance},
                        {"max_speed", s.locomotion.max_speed},

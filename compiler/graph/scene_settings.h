@@ -92,6 +92,7 @@ struct SceneSettings {
     // of unit-size fractals); "float" everywhere else (docs/graph-format.md).
     bool double_precision = false;
     double step_factor = 1.0;                         // times 1 / Lipschitz bound: the march's step scale (fgc calibrate)
+    double step_fraction = 1.0;                       // steps advance this share of the estimate; hit tests read all of it
     LocomotionSettings locomotion;
 
     bool has_background_gradient() const { return background.top != background.bottom; }

@@ -128,12 +128,14 @@ public:
         if (diag_.has_errors()) return std::nullopt;
         warn_looks();
         if (iterations > 256) diag_.warning(fmt::format("N {}: imported as 256 iterations, the formula node's most", iterations));
-        // Mandelbulber's DE_factor shortens its steps only; the graph's step_factor also scales the
-        // distance its hit test reads, which would fatten the surface (a Menger scene at 0.1 came
-        // out ten pixels wider). The march's safety is the compiler's bias and Lipschitz bound.
-        if (step != 1.0)
-            diag_.warning(fmt::format("DE_factor {:g}: not imported; the step is made safe by the formula's bias (fgc calibrate "
-                                      "measures it)", step));
+        // Mandelbulber's DE_factor shortens its steps only: the scene's step_fraction does the same
+        // (step_factor would also scale the distance the hit test reads, and fatten the surface).
+        if (step < 1.0) scene["step_fraction"] = std::max(step, 0.01);
+        if (step < 0.01)
+            diag_.warning(fmt::format("DE_factor {:g}: imported as a step fraction of 0.01, the least a graph takes", step));
+        if (step > 1.0)
+            diag_.warning(fmt::format("DE_factor {:g}: not imported; a step longer than the estimate would skip surfaces, "
+                                      "so the graph steps the whole estimate (fgc calibrate makes that safe)", step));
         // A panorama is how fgplay renders, not part of the scene.
         if (const FractValue* v = s_.find("perspective_type"); v && is_equirectangular(v->text))
             diag_.warning(fmt::format("line {}: perspective_type {}: render the panorama with fgplay render --path PATH "

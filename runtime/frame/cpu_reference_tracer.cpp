@@ -16,7 +16,7 @@ double reference_trace(const CpuEvaluator& scene, const SceneSettings& s, const 
     for (int i = 0; i < r.max_steps && t <= far; ++i) {
         double d = scene.distance(origin + dir * t) * r.step_scale;
         if (steps) ++*steps;
-        if (d < r.epsilon * cone_tan * t) return t;
+        if (d < r.epsilon * r.step_fraction * cone_tan * t) return t;
         t += d;
     }
     return t <= far ? t : -1.0;

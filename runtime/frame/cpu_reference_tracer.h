@@ -14,6 +14,7 @@ struct ReferenceSettings {
     double epsilon = 0.05;         // hit when d < epsilon * pixel half-diagonal cone at t
     int max_steps = 2000;
     double step_scale = 1.0;       // the pack's 1 / Lipschitz bound
+    double step_fraction = 1.0;    // the pack's step_fraction: in step_scale, divided out of the hit test
 };
 
 struct ReferenceDepth {

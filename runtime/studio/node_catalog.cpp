@@ -39,6 +39,9 @@ nlohmann::json node_catalog_json(const NodeLibrary& library) {
                          // Stages live in a formula's body, not on the canvas; a new node starts from
                          // its example (a formula node, from a whole body).
                          {"stage", def->is_stage()},
+                         // What the palette offers inside an open body: stages, and maths nodes
+                         // with a tangent rule (a body carrying them carries the Jacobian).
+                         {"in_body", def->fits_in_formula_body()},
                          {"example", def->example.is_object() ? def->example : nlohmann::json::object()}});
     }
     return nodes;

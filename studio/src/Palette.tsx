@@ -4,17 +4,18 @@ import { useMemo, useState } from "react";
 import type { NodeDef } from "./api";
 import { typeColour } from "./types";
 
-// Inside an open formula body (`stages`) it offers the stages, which belong there and nowhere else.
+// Inside an open formula body (`stages`) it offers what a body holds: the stages, which belong there
+// and nowhere else, and the maths nodes with a tangent rule.
 export function Palette({ nodes, onAdd, stages }: { nodes: NodeDef[]; onAdd: (type: string) => void; stages: boolean }) {
   const [query, setQuery] = useState("");
   const [hover, setHover] = useState<NodeDef | null>(null);
   const groups = useMemo(() => {
     const q = query.trim().toLowerCase();
-    const found = nodes.filter((n) => !!n.stage === stages && (!q || n.type.includes(q) || n.summary.toLowerCase().includes(q)));
+    const found = nodes.filter((n) => (stages ? n.in_body : !n.stage) && (!q || n.type.includes(q) || n.summary.toLowerCase().includes(q)));
     const byCategory = new Map<string, NodeDef[]>();
     for (const n of found) byCategory.set(n.category, [...(byCategory.get(n.category) ?? []), n]);
     return [...byCategory.entries()];
-  }, [nodes, query]);
+  }, [nodes, query, stages]);
   return (
     <aside className="palette">
       <input className="search" placeholder="search nodes" value={query} data-testid="palette-search" onChange={(e) => setQuery(e.target.value)} />

@@ -25,6 +25,7 @@ export interface NodeDef {
   outputs: PortDef[];
   generic: string[];
   stage: boolean;
+  in_body: boolean;
   example: { inputs?: Record<string, unknown>; formula?: unknown };
 }
 

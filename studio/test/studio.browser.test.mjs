@@ -378,7 +378,10 @@ test("the studio edits a graph with a live preview", async (t) => {
     await search.click({ clickCount: 3 });
     await search.type("fold");
     assert.ok(await page.$('[data-testid="palette-stage.plane_fold"]'), "inside a body the palette offers the stages");
-    assert.equal(await page.$('[data-testid="palette-op.round"]'), null, "and only the stages");
+    assert.equal(await page.$('[data-testid="palette-op.round"]'), null, "and nothing a body cannot hold");
+    await search.click({ clickCount: 3 });
+    await search.type("multiply");
+    assert.ok(await page.$('[data-testid="palette-math.multiply"]'), "and the maths nodes with a tangent rule");
     assert.equal(await page.$('[data-testid="node-trap"]'), null, "the graph's other nodes are not shown inside the body");
     await setLiteral("sphere", "min_radius", "0.3");
     const after = await waitForPreview(before);

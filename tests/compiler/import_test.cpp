@@ -61,6 +61,18 @@ TEST(MandelbulberImport, the_camera_turns_z_up_into_y_up_and_the_fov_into_degree
     // Mandelbulber's outer bound and its default view distance.
     EXPECT_EQ((*g)["scene"]["bounds"]["radius"], 100.0);
     EXPECT_EQ((*g)["scene"]["max_distance"], 50.0);
+    EXPECT_FALSE((*g)["scene"].contains("step_fraction"));
+
+    // DE_factor shortens the steps only: the step fraction, which hit tests divide back out.
+    Diagnostics shorter;
+    auto s = import_text(std::string(kHeader) + "DE_factor 0,25;\nformula_1 2;\n", shorter);
+    ASSERT_TRUE(s) << shorter.format();
+    EXPECT_EQ((*s)["scene"]["step_fraction"], 0.25);
+    Diagnostics longer;
+    auto o = import_text(std::string(kHeader) + "DE_factor 1,5;\nformula_1 2;\n", longer);
+    ASSERT_TRUE(o) << longer.format();
+    EXPECT_FALSE((*o)["scene"].contains("step_fraction"));
+    EXPECT_TRUE(said(longer, Severity::Warning, "DE_factor 1.5: not imported")) << longer.format();
 
     // Mandelbulber 2.10 and older drew the picture flipped top to bottom: the world mirrored in y,
     // seen with the camera's top reversed.

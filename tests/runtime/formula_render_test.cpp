@@ -48,8 +48,9 @@ TEST_P(FormulaGraph, renders_as_its_cpu_twin_traces_it_and_as_the_hand_written_n
     auto ref = reference_depth(*cpu->evaluator, cpu->settings, views.left, views.pixel_half_diagonal, rs);
     DepthComparison c = compare_depths(frame.depth_left, ref.depth, views.pixel_half_diagonal);
     double hit = static_cast<double>(c.both_hit + c.only_rendered) / static_cast<double>(c.pixels);
-    SCOPED_TRACE(fmt::format("{}: hit {:.1f}%, misclassified against the CPU twin {:.2f}%", name, 100.0 * hit,
-                             100.0 * c.misclassified));
+    SCOPED_TRACE(fmt::format("{}: hit {:.1f}%, misclassified against the CPU twin {:.2f}% ({} pixels hit only on the GPU, "
+                             "{} only on the CPU)",
+                             name, 100.0 * hit, 100.0 * c.misclassified, c.only_rendered, c.only_reference));
     EXPECT_EQ(c.not_finite, 0u);
     EXPECT_GT(hit, 0.05);
     // Float against double, at 64 px: a pixel on a silhouette may fall either way.

@@ -247,3 +247,30 @@ TEST_F(RuntimeTest, the_counting_frame_counts_the_iterations_of_the_fractal_loop
     EXPECT_LE(naive_ratio, bulb.manifest.find_spec("iterations.bulb")->value);
     EXPECT_GT(level0_ratio, naive_ratio);
 }
+
+// A step fraction shortens every step and leaves the hit test to the whole estimate: more
+// evaluations, the same surface as the CPU twin with the same rule, where a step factor of the
+// same size would fatten it.
+TEST_F(RuntimeTest, a_step_fraction_shortens_the_steps_and_leaves_the_surface_where_it_was) {
+    Scene scene = scenes()[1];
+    auto graph = nlohmann::json::parse(scene.graph);
+    graph["scene"]["step_fraction"] = 0.4;
+    Pack full = test::compile_pack(scene.graph), shorter = test::compile_pack(graph.dump());
+    EXPECT_NEAR(shorter.manifest.find_spec("step_scale")->value, 0.4 * full.manifest.find_spec("step_scale")->value, 1e-12);
+    Rendered a = render(full, scene, StereoMode::PerEye), b = render(shorter, scene, StereoMode::PerEye);
+    EXPECT_GT(b.frame.stats.evaluations_per_pixel, 1.3 * a.frame.stats.evaluations_per_pixel);
+    auto cpu = test::cpu_scene(shorter);
+    ReferenceSettings rs;
+    rs.step_scale = shorter.manifest.find_spec("step_scale")->value;
+    rs.step_fraction = shorter.manifest.find_spec("step_fraction")->value;
+    rs.epsilon = shorter.manifest.find_spec("epsilon")->value;
+    rs.max_steps = static_cast<int>(shorter.manifest.find_spec("max_steps")->value);
+    const double half = b.views.pixel_half_diagonal;
+    auto ref = reference_depth(*cpu->evaluator, cpu->settings, b.views.left, half, rs);
+    DepthComparison same = compare_depths(b.frame.depth_left, ref.depth, half);
+    EXPECT_LE(same.misclassified, 0.01);
+    // Against full steps: the hits move by a fraction of the hit threshold only.
+    DepthComparison moved = compare_depths(b.frame.depth_left, std::vector<double>(a.frame.depth_left.begin(), a.frame.depth_left.end()), half);
+    EXPECT_LE(moved.misclassified, 0.01);
+    EXPECT_LT(moved.median_error, 0.5);
+}

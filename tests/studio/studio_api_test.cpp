@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -117,11 +118,16 @@ TEST_F(StudioApiTest, MarksFormulaStagesAndGivesTheFormulaNodeABody) {
     auto nodes = json::parse(client().Get("/api/nodes")->body)["nodes"];
     json example;
     std::size_t stages = 0;
+    std::set<std::string> in_body;
     for (const auto& n : nodes) {
         stages += n["stage"].get<bool>();
+        if (n["in_body"].get<bool>()) in_body.insert(n["type"].get<std::string>());
         if (n["type"] == "fractal.formula") example = n["example"];
     }
     EXPECT_GE(stages, 10u);
+    // A body's palette: stages and maths with a tangent rule, not jumps or shapes.
+    EXPECT_TRUE(in_body.count("stage.box_fold") && in_body.count("stage.orbit") && in_body.count("math.multiply"));
+    EXPECT_FALSE(in_body.count("math.floor") || in_body.count("prim.sphere"));
     ASSERT_TRUE(example.contains("formula")) << example;
     json g = json::parse(R"({"format": "fractograph-graph", "version": 1, "nodes": [], "outputs": {"distance": "f.distance"}})");
     json node = {{"id", "f"}, {"type", "fractal.formula"}};

@@ -184,7 +184,7 @@ void fg_fine_step(inout FgFineRay r)
         if (r.bound > r.range.y && d <= FG_CONE_STOP * radius) r.bound = r.t;
         cone_safe = r.bound > r.range.y;
     }
-    if (d < FG_EPSILON * r.hit_tan * r.t) {
+    if (d < FG_EPSILON * FG_STEP_FRACTION * r.hit_tan * r.t) {
         r.hit = true;
         r.marching = false;
         return;

@@ -57,7 +57,7 @@ void fg_naive_step(inout FgNaiveRay r)
     float d = fg_scene_distance(r.ro + r.rd * r.t) * FG_STEP_SCALE;
     fg_evaluations++;
     r.closest = min(r.closest, d);
-    if (d < FG_EPSILON * r.hit_tan * r.t) {
+    if (d < FG_EPSILON * FG_STEP_FRACTION * r.hit_tan * r.t) {
         r.hit = true;
         r.marching = false;
         return;

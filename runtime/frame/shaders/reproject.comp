@@ -133,7 +133,7 @@ void main()
                 float d = fg_scene_distance(ro + r * t) * FG_STEP_SCALE;
                 evaluations++;
                 closest = min(closest, d);
-                if (d < FG_EPSILON * cone * t) {
+                if (d < FG_EPSILON * FG_STEP_FRACTION * cone * t) {
                     hit = true;
                     done = true;
                     break;

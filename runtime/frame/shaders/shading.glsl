@@ -138,7 +138,7 @@ vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
     for (int i = 0; i < FG_MAX_STEPS && along <= range.y; i++) {
         vec3 q = origin + dir * along;
         float d = fg_scene_distance(q) * FG_STEP_SCALE;
-        if (d < footprint * (t + along)) return fg_shade_direct(q, dir, fg_surface_normal(q, t + along)).color;
+        if (d < footprint * FG_STEP_FRACTION * (t + along)) return fg_shade_direct(q, dir, fg_surface_normal(q, t + along)).color;
         along += d;
     }
     return fg_background(dir);

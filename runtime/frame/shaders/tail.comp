@@ -47,7 +47,7 @@ void main()
             continue;
         }
         closest = min(closest, d);
-        if (d < FG_EPSILON * cone * t) {
+        if (d < FG_EPSILON * FG_STEP_FRACTION * cone * t) {
             hit = true;
             break;
         }
