@@ -22,6 +22,7 @@
 #include "xr/depth_layer.h"
 #include "xr/eye_swapchain.h"
 #include "xr/swapchain_colour.h"
+#include "frame/display_period.h"
 #include "frame/frame_governor.h"
 #include "frame/trade_off_ladder.h"
 #include "xr/visibility_mask.h"
@@ -368,10 +369,11 @@ private:
     // Reads this frame's GPU time; a new level takes effect from the next frame (new sizes and
     // pipelines), logged with its reason.
     void govern(const FrameStats& fs, XrDuration period_ns) {
+        display_period_.observe(static_cast<double>(period_ns) * 1e-6);
         auto it = fs.gpu_ms.find("frame");
-        if (it == fs.gpu_ms.end()) return;
-        const double budget = budget_ms(period_ns);
-        bool changed = governor_->observe(it->second, budget);
+        const auto budget = budget_ms();
+        if (it == fs.gpu_ms.end() || !budget) return;
+        bool changed = governor_->observe(it->second, *budget);
         if (!governor_->message().empty()) {
             fmt::print("governor: {}\n", governor_->message());
             std::fflush(stdout);
@@ -383,13 +385,12 @@ private:
     }
 
     // The frame budget: --budget-ms, else the display's own refresh (XR_FB_display_refresh_rate),
-    // else the shortest display period the runtime has predicted. Not this frame's predicted period:
-    // a runtime stretches it to whole display periods that cover a slow application (Monado does),
-    // and a budget that followed it would never ask for a cheaper frame. Says which when it changes.
-    double budget_ms(XrDuration period_ns) {
-        shortest_period_ms_ = std::min(shortest_period_ms_, static_cast<double>(period_ns) * 1e-6);
-        double budget = shortest_period_ms_;
-        std::string source = "the shortest display period the runtime predicted";
+    // else the display period learned from the predicted ones (display_period.h): never the first
+    // frame's placeholder, never a period stretched to cover a slow application, which would never
+    // ask for a cheaper frame. None yet on the first frame. Says which when it changes.
+    std::optional<double> budget_ms() {
+        std::optional<double> budget;
+        std::string source;
         float hz = 0.0f;
         if (options_.budget_ms > 0.0) {
             budget = options_.budget_ms;
@@ -397,12 +398,14 @@ private:
         } else if (refresh_rate_ && refresh_rate_(session_, &hz) == XR_SUCCESS && hz > 0.0f) {
             budget = 1000.0 / hz;
             source = fmt::format("the display's refresh rate, {:.4g} Hz", hz);
+        } else if ((budget = display_period_.ms())) {
+            source = "the display period learned from the predicted ones, the first left out";
         }
-        if (source != budget_source_ || budget != budget_ms_) {
-            fmt::print("governor: budget {:.4g} ms per frame ({})\n", budget, source);
+        if (budget && (*budget != budget_ms_ || source != budget_source_)) {
+            fmt::print("governor: budget {:.4g} ms per frame ({})\n", *budget, source);
             std::fflush(stdout);
             budget_source_ = source;
-            budget_ms_ = budget;
+            budget_ms_ = *budget;
         }
         return budget;
     }
@@ -494,7 +497,7 @@ private:
     int wraps_seen_ = 0;
     double base_detail_scale_ = 1.0;   // the render size's pixels per swapchain pixel at level 0
     PFN_xrGetDisplayRefreshRateFB refresh_rate_ = nullptr;   // where the runtime has XR_FB_display_refresh_rate
-    double shortest_period_ms_ = 1e30;
+    DisplayPeriod display_period_;
     std::string budget_source_;
     double budget_ms_ = 0.0;
     std::unique_ptr<CollisionWitness> witness_;

@@ -88,6 +88,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
         if (name == XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME) inst->refresh_rate = true;
     }
     inst->stretch = switched_on("FG_XR_TEST_STRETCH");
+    if (const char* first = std::getenv("FG_XR_TEST_FIRST_PERIOD_MS")) inst->first_period_ms = std::atof(first);
     // "WxH" for both eyes, or "WxH,WxH": a runtime may recommend a different size for each eye.
     if (const char* size = std::getenv("FG_XR_TEST_SIZE")) {
         unsigned w[2] = {0, 0}, h[2] = {0, 0};

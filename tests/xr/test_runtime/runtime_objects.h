@@ -89,6 +89,9 @@ struct Instance {
     // FG_XR_TEST_STRETCH=1: as Monado, the predicted display period stretches to whole display
     // periods that cover the application's own frame interval (wall clock).
     bool stretch = false;
+    // FG_XR_TEST_FIRST_PERIOD_MS: as Monado, the first xrWaitFrame predicts this placeholder period
+    // whatever the display's is.
+    double first_period_ms = 0.0;
     std::chrono::steady_clock::time_point last_wait{};
     bool requirements_queried = false;
     std::deque<XrEventDataBuffer> events;

@@ -321,6 +321,8 @@ XRAPI_ATTR XrResult XRAPI_CALL WaitFrame(XrSession handle, const XrFrameWaitInfo
         period *= std::max<XrDuration>(1, (since + period - 1) / period);
     }
     inst->last_wait = now;
+    if (inst->report.frames_waited == 0 && inst->first_period_ms > 0.0)
+        period = static_cast<XrDuration>(inst->first_period_ms * 1e6);
     inst->report.longest_period_ms = std::max(inst->report.longest_period_ms, static_cast<double>(period) * 1e-6);
     s->waited_display_time = s->next_display_time;
     s->next_display_time += period;
