@@ -61,6 +61,7 @@ public:
     const GovernorLevel& current() const { return ladder_[static_cast<std::size_t>(level_)]; }
     bool at_floor() const { return level_ + 1 == static_cast<int>(ladder_.size()); }
     int levels() const { return static_cast<int>(ladder_.size()); }
+    const std::vector<GovernorLevel>& ladder() const { return ladder_; }
     // Why the last change happened, or that the floor cannot hold the budget (for the log).
     const std::string& message() const { return message_; }
 

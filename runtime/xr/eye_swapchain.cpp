@@ -70,49 +70,64 @@ void EyeSwapchain::present(const vk::Context& ctx, vk::StorageImage& source) {
     if (index >= images_.size())
         throw XrError(XR_ERROR_RUNTIME_FAILURE, fmt::format("the runtime acquired swapchain image {} of {}", index, images_.size()));
 
+    copy(ctx, source, images_[index], true);
+    XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
+    check(xrReleaseSwapchainImage(swapchain_, &release), "xrReleaseSwapchainImage");
+}
+
+
+void EyeSwapchain::prepare(const vk::Context& ctx, vk::StorageImage& source) {
+    if (!rehearsal_) rehearsal_ = std::make_unique<vk::TransferImage>(ctx, format_, VkExtent2D{width_, height_});
+    copy(ctx, source, rehearsal_->handle(), false);
+}
+
+// Copies `source` into `target` as the runtime's image takes it (the same bytes, or blitted to the
+// swapchain's size). The runtime's images come and go in COLOR_ATTACHMENT_OPTIMAL; prepare()'s own
+// is left in TRANSFER_DST_OPTIMAL.
+void EyeSwapchain::copy(const vk::Context& ctx, vk::StorageImage& source, VkImage target, bool runtime_image) {
     const VkExtent2D from = source.extent();
     // The final image's bytes are sRGB-encoded already: an R8G8B8A8_SRGB image of the same size
     // takes them as they are.
     const bool copy_as_they_are = format_ == VK_FORMAT_R8G8B8A8_SRGB && from.width == width_ && from.height == height_;
-    if (!copy_as_they_are && (!encoded_ || encoded_->extent().width != from.width || encoded_->extent().height != from.height))
-        encoded_ = std::make_unique<vk::TransferImage>(ctx, VK_FORMAT_R8G8B8A8_SRGB, from);
-
-    VkImage target = images_[index];
+    std::unique_ptr<vk::TransferImage>& encoded = encoded_[{from.width, from.height}];
+    if (!copy_as_they_are && !encoded) encoded = std::make_unique<vk::TransferImage>(ctx, VK_FORMAT_R8G8B8A8_SRGB, from);
     vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
         // The frame graph wrote `source` in compute; the runtime hands images over in
         // COLOR_ATTACHMENT_OPTIMAL and wants them back in it.
         source.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, vk::access::compute_write, vk::access::transfer_read);
-        vk::image_layout_barrier(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                 {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
-                                 vk::access::transfer_write);
-        VkImageCopy copy{};
-        copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.extent = {from.width, from.height, 1};
+        if (runtime_image)
+            vk::image_layout_barrier(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
+                                     vk::access::transfer_write);
+        else
+            rehearsal_->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, vk::access::transfer_write, vk::access::transfer_write);
+        VkImageCopy region_copy{};
+        region_copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region_copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region_copy.extent = {from.width, from.height, 1};
         if (copy_as_they_are) {
             vkCmdCopyImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &copy);
+                           &region_copy);
         } else {
-            encoded_->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, vk::access::transfer_read, vk::access::transfer_write);
-            vkCmdCopyImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, encoded_->handle(),
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-            encoded_->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, vk::access::transfer_write, vk::access::transfer_read);
+            encoded->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, vk::access::transfer_read, vk::access::transfer_write);
+            vkCmdCopyImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, encoded->handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region_copy);
+            encoded->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, vk::access::transfer_write, vk::access::transfer_read);
             VkImageBlit region{};
             region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.srcOffsets[1] = {static_cast<std::int32_t>(from.width), static_cast<std::int32_t>(from.height), 1};
             region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.dstOffsets[1] = {static_cast<std::int32_t>(width_), static_cast<std::int32_t>(height_), 1};
-            vkCmdBlitImage(cmd, encoded_->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+            vkCmdBlitImage(cmd, encoded->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                            &region, VK_FILTER_LINEAR);
         }
-        vk::image_layout_barrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                 vk::access::transfer_write,
-                                 {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+        if (runtime_image)
+            vk::image_layout_barrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                     vk::access::transfer_write,
+                                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
         // Back to GENERAL for the next frame's passes, after this read.
         source.transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::transfer_read, vk::access::compute_read_write);
     });
-    XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
-    check(xrReleaseSwapchainImage(swapchain_, &release), "xrReleaseSwapchainImage");
 }
 
 }  // namespace fg::xr

@@ -7,6 +7,7 @@
 //     they are, and blitted from there: the blit decodes them, filters in linear light when the
 //     sizes differ, and encodes for an sRGB swapchain or stores linear values in a linear one.
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -34,6 +35,9 @@ public:
 
     // Acquire, wait, copy or blit `source` (written by compute, left in GENERAL) and release.
     void present(const vk::Context& ctx, vk::StorageImage& source);
+    // The same copy or blit into an image of its own: what a later present of a source of this
+    // size needs is made now (lavapipe compiles its blit at the first one), not in a frame.
+    void prepare(const vk::Context& ctx, vk::StorageImage& source);
 
     XrSwapchain handle() const { return swapchain_; }
     std::uint32_t width() const { return width_; }
@@ -45,7 +49,11 @@ private:
     std::vector<VkImage> images_;
     VkFormat format_;
     std::uint32_t width_ = 0, height_ = 0;
-    std::unique_ptr<vk::TransferImage> encoded_;   // the final image's bytes labelled sRGB, for the blit
+    // The final image's bytes labelled sRGB, for the blit: one per source size (a governor's levels).
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::unique_ptr<vk::TransferImage>> encoded_;
+    std::unique_ptr<vk::TransferImage> rehearsal_;   // prepare()'s target, the swapchain's size and format
+
+    void copy(const vk::Context& ctx, vk::StorageImage& source, VkImage target, bool runtime_image);
 };
 
 }  // namespace fg::xr

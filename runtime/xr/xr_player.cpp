@@ -5,12 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "frame/frame_executor.h"
+#include "frame/gpu_uniforms.h"
+#include "frame/pipeline_store.h"
 #include "frame/image_output.h"
 #include "graph/scene_settings.h"
 #include "locomotion/collision_witness.h"
@@ -118,7 +121,8 @@ public:
 
     ~XrPlayer() {
         step_.reset();
-        executor_.reset();
+        executor_ = nullptr;
+        executors_.clear();
         for (auto& s : swapchains_) s.reset();
         actions_.reset();
         for (auto& s : depth_) s.reset();
@@ -299,30 +303,16 @@ private:
         if (executor_ && executor_->graph().taa && step_->wraps() != wraps_seen_) executor_->forget_history();
         stereo_.jitter = executor_ ? executor_->taa_jitter() : glm::dvec2(0.0);
         wraps_seen_ = step_->wraps();
+        if (options_.governor && !levels_prepared_) prepare_levels(head, fov(views[0].fov), fov(views[1].fov), viewer);
         StereoViews sv = make_stereo_views(head, fov(views[0].fov), fov(views[1].fov), stereo_);
-        if (!executor_ || rebuild_ || sv.centre.width != centre_width_ || sv.centre.height != centre_height_) {
-            rebuild_ = false;
-            masks_dirty_ = true;
-            ctx_.wait_idle();
-            executor_.reset();
-            executor_ = std::make_unique<FrameExecutor>(ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width,
-                                                                                      sv.centre.height));
-            centre_width_ = sv.centre.width;
-            centre_height_ = sv.centre.height;
-        }
+        select_executor(sv);
         if (masks_dirty_) update_lens_masks(sv);
         if (first_time_ == 0) first_time_ = time;
         // The frame graph's settings are the player's with what the pack decides filled in (a double
         // pack's relative origins, the scene's foveation where the player says "as the scene says").
         GpuFrame gpu = make_gpu_frame(sv, executor_->graph().settings, static_cast<double>(time - first_time_) * 1e-9, viewer.world_scale,
                                       static_cast<std::uint32_t>(stats_.frames));
-        // The headset's own visibility mask, where it gives one, as the frame graph's lens mask:
-        // pixels outside it are never marched.
-        for (int eye = 0; eye < 2; ++eye)
-            if (lenses_[eye].radius_u > 0.0) {
-                gpu.views[eye].lens_centre = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v)};
-                gpu.views[eye].lens_radii = {static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
-            }
+        put_lenses(gpu);
         executor_->set_frame(gpu);
         executor_->set_scene(viewer.scene);
         FrameStats fs = executor_->run();
@@ -381,7 +371,72 @@ private:
         if (!changed) return;
         apply(governor_->current());
         set_marched_size(stereo_, frame_);
-        rebuild_ = true;
+    }
+
+    // The executor of the governor's level, or of the fixed settings. Each level keeps its own, so a
+    // level change swaps executors and waits for nothing; only a new field of view (a new size)
+    // builds one again.
+    void select_executor(const StereoViews& sv) {
+        LevelExecutor& slot = executors_[options_.governor ? governor_->level() : 0];
+        if (!slot.executor || slot.width != sv.centre.width || slot.height != sv.centre.height) {
+            if (slot.executor) ctx_.wait_idle();   // a present may still read its images
+            if (executor_ == slot.executor.get()) executor_ = nullptr;
+            slot.executor = std::make_unique<FrameExecutor>(
+                ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
+            slot.width = sv.centre.width;
+            slot.height = sv.centre.height;
+        }
+        if (executor_ == slot.executor.get()) return;
+        // Its history is from when its level last ran, another view.
+        if (executor_) slot.executor->forget_history();
+        executor_ = slot.executor.get();
+        masks_dirty_ = true;
+    }
+
+    // The headset's own visibility mask, where it gives one, as the frame graph's lens mask: pixels
+    // outside it are never marched.
+    void put_lenses(GpuFrame& gpu) const {
+        for (int eye = 0; eye < 2; ++eye)
+            if (lenses_[eye].radius_u > 0.0) {
+                gpu.views[eye].lens_centre = {static_cast<float>(lenses_[eye].centre_u), static_cast<float>(lenses_[eye].centre_v)};
+                gpu.views[eye].lens_radii = {static_cast<float>(lenses_[eye].radius_u), static_cast<float>(lenses_[eye].radius_v)};
+            }
+    }
+
+    // Every level's executor built and run once before the first frame is shown: lavapipe compiles
+    // a pipeline at its first dispatch, and building one takes a device that waits. Levels that
+    // differ only in size share their pipelines (pipelines_).
+    void prepare_levels(const HeadPose& head, const Fov& left, const Fov& right, const ViewerFrame& viewer) {
+        levels_prepared_ = true;
+        const auto start = std::chrono::steady_clock::now();
+        const GovernorLevel current = governor_->current();
+        for (int level = governor_->levels() - 1; level >= 0; --level) {
+            apply(governor_->ladder()[static_cast<std::size_t>(level)]);
+            set_marched_size(stereo_, frame_);
+            const StereoViews sv = make_stereo_views(head, left, right, stereo_);
+            LevelExecutor& slot = executors_[level];
+            slot.executor = std::make_unique<FrameExecutor>(
+                ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
+            slot.width = sv.centre.width;
+            slot.height = sv.centre.height;
+            // With the lens mask, so that its tile lists' passes are compiled too.
+            update_lens_masks(sv);
+            GpuFrame gpu = make_gpu_frame(sv, slot.executor->graph().settings, 0.0, viewer.world_scale, 0);
+            put_lenses(gpu);
+            slot.executor->set_frame(gpu);
+            slot.executor->set_scene(viewer.scene);
+            // Twice: passes that read the frame before run from the second frame on.
+            slot.executor->run();
+            slot.executor->run();
+            slot.executor->forget_history();
+            for (int eye = 0; eye < 2; ++eye) swapchains_[eye]->prepare(ctx_, slot.executor->image(eye ? "final.right" : "final.left"));
+        }
+        apply(current);
+        set_marched_size(stereo_, frame_);
+        fmt::print("governor: {} levels built and run once in {:.1f} s: a level change waits for nothing\n",
+                   governor_->levels(),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        std::fflush(stdout);
     }
 
     // The frame budget: --budget-ms, else the display's own refresh (XR_FB_display_refresh_rate),
@@ -485,15 +540,20 @@ private:
     DepthProjection depth_projection_;
     FrameSettings frame_;
     StereoSettings stereo_;
-    std::unique_ptr<FrameExecutor> executor_;
-    std::uint32_t centre_width_ = 0, centre_height_ = 0;
+    struct LevelExecutor {
+        std::unique_ptr<FrameExecutor> executor;
+        std::uint32_t width = 0, height = 0;   // the centre view it was built for
+    };
+    PipelineStore pipelines_;
+    std::map<int, LevelExecutor> executors_;   // per governor level (0 without the governor)
+    FrameExecutor* executor_ = nullptr;        // the one in use
+    bool levels_prepared_ = false;
     XrTime first_time_ = 0, last_time_ = 0;
     std::unique_ptr<ControllerActions> actions_;
     double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0;
     std::unique_ptr<ViewerStep> step_;
     std::unique_ptr<FrameGovernor> governor_;
     std::uint32_t base_width_ = 0, base_height_ = 0;
-    bool rebuild_ = false;
     int wraps_seen_ = 0;
     double base_detail_scale_ = 1.0;   // the render size's pixels per swapchain pixel at level 0
     PFN_xrGetDisplayRefreshRateFB refresh_rate_ = nullptr;   // where the runtime has XR_FB_display_refresh_rate

@@ -56,6 +56,7 @@ struct Session {
     bool running = false, exit_requested = false, lost = false;
     XrTime begin_time = 0, next_display_time = 0, waited_display_time = 0;
     bool frame_waited = false, frame_begun = false;
+    std::chrono::steady_clock::time_point begun{};   // the last xrBeginFrame
     std::vector<std::unique_ptr<Swapchain>> swapchains;
     std::unique_ptr<FrameInspector> inspector;
     // Input: the attached action sets, the interaction profile in use, the last sync's time.

@@ -1,5 +1,7 @@
 #include "runtime_report.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 
@@ -27,6 +29,14 @@ void RuntimeReport::write() const {
     j["visibility_mask_calls"] = visibility_mask_calls;
     j["refresh_rate_calls"] = refresh_rate_calls;
     j["longest_period_ms"] = longest_period_ms;
+    j["frame_ms"] = frame_ms;
+    // A stall is a frame far longer than the run's usual one, after the first frames (pipelines).
+    std::vector<double> later(frame_ms.begin() + std::min<std::size_t>(10, frame_ms.size()), frame_ms.end());
+    std::vector<double> sorted = later;
+    std::sort(sorted.begin(), sorted.end());
+    // Whole microseconds: CMake's tests compare integers only.
+    j["median_frame_us_after_10"] = sorted.empty() ? 0 : std::lround(1000.0 * sorted[sorted.size() / 2]);
+    j["longest_frame_us_after_10"] = sorted.empty() ? 0 : std::lround(1000.0 * sorted.back());
     j["vulkan_instance_created_by_runtime"] = vulkan_instance_created;
     j["vulkan_device_created_by_runtime"] = vulkan_device_created;
     j["device_features_added_by_runtime"] = device_features_added;

@@ -14,6 +14,8 @@ struct RuntimeReport {
     int visibility_mask_calls = 0;
     int refresh_rate_calls = 0;              // xrGetDisplayRefreshRateFB
     double longest_period_ms = 0.0;          // the longest display period predicted
+    std::vector<double> frame_ms;            // wall time from xrBeginFrame to xrEndFrame, per frame (and its
+                                             // median and longest after the first 10, in the JSON)
     bool vulkan_instance_created = false, vulkan_device_created = false;
     std::vector<std::string> device_features_added;   // feature structs the runtime put into fgplay's device chain
     bool exit_requested = false, session_ended = false, session_destroyed = false, instance_destroyed = false;

@@ -342,6 +342,7 @@ XRAPI_ATTR XrResult XRAPI_CALL BeginFrame(XrSession handle, const XrFrameBeginIn
     if (!s->frame_waited) return XR_ERROR_CALL_ORDER_INVALID;
     s->frame_waited = false;
     s->frame_begun = true;
+    s->begun = std::chrono::steady_clock::now();
     return XR_SUCCESS;
 }
 
@@ -467,6 +468,7 @@ XRAPI_ATTR XrResult XRAPI_CALL EndFrame(XrSession handle, const XrFrameEndInfo* 
     if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE) return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
     s->frame_begun = false;
     Instance* inst = live_instance();
+    inst->report.frame_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s->begun).count());
     inspect(*s, *info);
     int ended = ++inst->report.frames_ended;
     if (ended == inst->script.stop_at) walk_down_to_stopping(*s);
