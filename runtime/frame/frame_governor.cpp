@@ -47,10 +47,12 @@ std::vector<GovernorLevel> governor_ladder(const PackManifest& m) {
 FrameGovernor::FrameGovernor(std::vector<GovernorLevel> ladder, const GovernorSettings& settings)
     : ladder_(std::move(ladder)), settings_(settings) {
     if (ladder_.empty()) ladder_.push_back({});
+    climb_wait_.assign(ladder_.size(), settings_.up_after);
 }
 
 bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
     message_.clear();
+    ++frames_at_level_;
     if (cooldown_ > 0) {
         --cooldown_;
         return false;
@@ -66,7 +68,7 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
     under_ = mean < settings_.up_fraction * budget_ms ? under_ + 1 : 0;
     int next = level_;
     if (over_ >= settings_.down_after && !at_floor()) next = level_ + 1;
-    else if (under_ >= settings_.up_after && level_ > 0) next = level_ - 1;
+    else if (level_ > 0 && under_ >= climb_wait_[static_cast<std::size_t>(level_ - 1)]) next = level_ - 1;
     if (next == level_) {
         if (at_floor() && over_ >= settings_.down_after && !floor_reported_) {
             floor_reported_ = true;
@@ -76,13 +78,22 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
         return false;
     }
     const char* why = next > level_ ? "over" : "well under";
+    std::string backoff;
+    if (next > level_ && climbed_ && frames_at_level_ < settings_.failed_climb_frames) {
+        int& wait = climb_wait_[static_cast<std::size_t>(level_)];
+        wait = std::min(2 * wait, settings_.most_up_after);
+        backoff = fmt::format("; it fell back from level {} after {} frames, so climbing there again waits for {} judgements",
+                              level_, frames_at_level_, wait);
+    }
+    climbed_ = next < level_;
+    frames_at_level_ = 0;
     level_ = next;
     if (!at_floor()) floor_reported_ = false;
     over_ = under_ = 0;
     recent_.clear();
     cooldown_ = settings_.cooldown;
-    message_ = fmt::format("level {} ({}): {:.1f} ms of GPU time per frame, {} the {:.3g} ms budget", level_, current().describe(),
-                           mean, why, budget_ms);
+    message_ = fmt::format("level {} ({}): {:.1f} ms of GPU time per frame, {} the {:.3g} ms budget{}", level_,
+                           current().describe(), mean, why, budget_ms, backoff);
     return true;
 }
 

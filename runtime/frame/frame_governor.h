@@ -4,8 +4,9 @@
 // time of recent frames and moves along a ladder of settings, each cheaper and less accurate
 // than the one before (render scale, foveation, then the epsilon and step-cap knobs), the
 // trade-off `fgplay bench` measures. Hysteresis: it steps down only after several frames over
-// budget, steps up only after many frames well under it, and waits after each change, so the
-// image does not flicker between two settings.
+// budget, steps up only after many frames well under it, waits after each change, and waits
+// twice as long to climb again to a level it just fell back from, so the image does not flicker
+// between two settings.
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -48,6 +49,11 @@ struct GovernorSettings {
     int up_after = 6;        // consecutive averages under `up_fraction` of the budget before stepping up
     int cooldown = 3;        // frames ignored after a change (new pipelines, new sizes)
     double up_fraction = 0.6;
+    // A climb that falls back within `failed_climb_frames` frames doubles the judgements the next
+    // climb to that level waits for, up to `most_up_after`: two rungs that straddle the budget
+    // settle on the cheaper one instead of switching every few frames.
+    int failed_climb_frames = 60;
+    int most_up_after = 768;
 };
 
 class FrameGovernor {
@@ -69,6 +75,9 @@ private:
     std::vector<GovernorLevel> ladder_;
     GovernorSettings settings_;
     int level_ = 0, over_ = 0, under_ = 0, cooldown_ = 0;
+    int frames_at_level_ = 0;
+    bool climbed_ = false;                // the current level was reached by a climb
+    std::vector<int> climb_wait_;         // per level: judgements under the budget a climb to it waits for
     bool floor_reported_ = false;
     std::deque<double> recent_;
     std::string message_;

@@ -41,6 +41,23 @@ TEST(FrameGovernor, ATimeBetweenTheThresholdsChangesNothing) {
     EXPECT_EQ(g.level(), level);
 }
 
+TEST(FrameGovernor, TwoRungsThatStraddleTheBudgetSettleInsteadOfSwitchingForEver) {
+    // Level 1 costs 60 ms of a 50 ms budget, level 2 26 ms, under 60 % of it: a climb from 2 to 1
+    // always falls back. The first climbs come quickly, later ones ever more rarely.
+    FrameGovernor g(ladder(4));
+    for (int i = 0; i < 20; ++i) g.observe(70.0, 50.0);   // down from 0 to where it fits
+    int changes_late = 0, backoffs = 0;
+    for (int frame = 0; frame < 600; ++frame) {
+        const double ms = g.level() <= 1 ? 60.0 : 26.0;
+        const bool changed = g.observe(ms, 50.0);
+        if (frame >= 300) changes_late += changed ? 1 : 0;
+        backoffs += g.message().find("climbing there again waits") != std::string::npos ? 1 : 0;
+    }
+    EXPECT_LE(changes_late, 6) << "at most 2 changes per 100 frames once settled";
+    EXPECT_GE(backoffs, 3) << "each failed climb says so";
+    EXPECT_GE(g.level(), 1);
+}
+
 TEST(FrameGovernor, OneSlowFrameDoesNotStepDown) {
     FrameGovernor g(ladder(4));
     for (int i = 0; i < 10; ++i) g.observe(5.0, 11.1);
