@@ -425,8 +425,6 @@ private:
             put_lenses(gpu);
             slot.executor->set_frame(gpu);
             slot.executor->set_scene(viewer.scene);
-            // Twice: passes that read the frame before run from the second frame on.
-            slot.executor->run();
             slot.executor->run();
             slot.executor->forget_history();
             for (int eye = 0; eye < 2; ++eye) swapchains_[eye]->prepare(ctx_, slot.executor->image(eye ? "final.right" : "final.left"));
