@@ -57,31 +57,32 @@ std::shared_ptr<const CpuFormula> CpuFormula::create(std::shared_ptr<const Formu
     return f;
 }
 
+// An argument's value in this iteration.
+CpuValue CpuFormula::argument(const FormulaArg& a, const CpuValue* in, const Orbit& orbit, const Scratch& scratch) const {
+    switch (a.kind) {
+        case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(orbit.z) : scratch.outs[a.stage][a.output];
+        case FormulaArg::Kind::C: return CpuValue::of(orbit.c);
+        case FormulaArg::Kind::Iteration: return CpuValue::of(static_cast<double>(orbit.iteration));
+        case FormulaArg::Kind::Input: return a.splat ? CpuValue::of(glm::dvec4(in[a.input].f())) : in[a.input];
+        case FormulaArg::Kind::Constant: break;
+    }
+    return CpuValue::of(a.constant);
+}
+
 // One pass through a group: as formula_glsl()'s iteration.
-void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias,
-                         Scratch& scratch) const {
+void CpuFormula::iterate(int group, const CpuValue* in, Orbit& orbit, double bias, Scratch& scratch) const {
     const FormulaProgram& prog = *program_;
     const auto& g = prog.groups[static_cast<std::size_t>(group)];
     const auto& fns = functions_[static_cast<std::size_t>(group)];
     auto& outs = scratch.outs;
     auto& d = scratch.d;
     auto& args = scratch.args;
-    auto value = [&](const FormulaArg& a) {
-        switch (a.kind) {
-            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(z) : outs[a.stage][a.output];
-            case FormulaArg::Kind::Iteration: break;  // only Jacobian formulas read it
-            case FormulaArg::Kind::C: return CpuValue::of(c);
-            case FormulaArg::Kind::Input: return a.splat ? CpuValue::of(glm::dvec4(in[a.input].f())) : in[a.input];
-            case FormulaArg::Kind::Constant: break;
-        }
-        return CpuValue::of(a.constant);
-    };
     for (std::size_t k = 0; k < g.stages.size(); ++k) {
         const FormulaStage& s = g.stages[k];
-        for (std::size_t a = 0; a < s.args.size(); ++a) args[a] = value(s.args[a]);
+        for (std::size_t a = 0; a < s.args.size(); ++a) args[a] = argument(s.args[a], in, orbit, scratch);
         fns[k](args, outs[k]);
         int from = s.args[0].stage;
-        double d_in = from < 0 ? dr : d[from];
+        double d_in = from < 0 ? orbit.dr : d[from];
         switch (s.def->derivative.rule) {
             case Rule::Conformal:
             case Rule::Bound:
@@ -90,8 +91,8 @@ void CpuFormula::iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4
             default: d[k] = d_in; break;
         }
     }
-    z = outs[g.z_out][0].v4();
-    dr = glsl::fg_conservative_dr(dr, bias, d[g.z_out]);
+    orbit.z = outs[g.z_out][0].v4();
+    orbit.dr = glsl::fg_conservative_dr(orbit.dr, bias, d[g.z_out]);
 }
 
 // One pass through a group carrying the Jacobian: as formula_glsl()'s jacobian_iteration.
@@ -104,16 +105,6 @@ void CpuFormula::iterate_jacobian(int group, const CpuValue* in, Orbit& orbit, d
     auto& outs = scratch.outs;
     auto& args = scratch.args;
     auto& tangents = ts.tangents;
-    auto value = [&](const FormulaArg& a) {
-        switch (a.kind) {
-            case FormulaArg::Kind::Orbit: return a.stage < 0 ? CpuValue::of(orbit.z) : outs[a.stage][a.output];
-            case FormulaArg::Kind::C: return CpuValue::of(orbit.c);
-            case FormulaArg::Kind::Iteration: return CpuValue::of(static_cast<double>(orbit.iteration));
-            case FormulaArg::Kind::Input: return a.splat ? CpuValue::of(glm::dvec4(in[a.input].f())) : in[a.input];
-            case FormulaArg::Kind::Constant: break;
-        }
-        return CpuValue::of(a.constant);
-    };
     const double inv = 1.0 / orbit.dr;
     auto tangent = [&](const FormulaArg& a, int j) {
         switch (a.kind) {
@@ -131,7 +122,7 @@ void CpuFormula::iterate_jacobian(int group, const CpuValue* in, Orbit& orbit, d
     };
     for (std::size_t k = 0; k < g.stages.size(); ++k) {
         const FormulaStage& s = g.stages[k];
-        for (std::size_t a = 0; a < s.args.size(); ++a) args[a] = value(s.args[a]);
+        for (std::size_t a = 0; a < s.args.size(); ++a) args[a] = argument(s.args[a], in, orbit, scratch);
         fns[k](args, outs[k]);
         for (int j = 0; j < 3; ++j) {
             for (std::size_t t = 0; t < s.tangent_args.size(); ++t)
@@ -158,32 +149,27 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     const glm::dvec4 c = !prog.julia ? start : quaternion ? in[kFormulaC].v4() : glm::dvec4(in[kFormulaC].v3(), 0.0);
     const int iterations = in[kFormulaIterations].i();
     const double bail2 = in[kFormulaBailout].f() * in[kFormulaBailout].f(), bias = in[kFormulaBias].f();
-    glm::dvec4 z = start;
-    double dr = 1.0, r2 = glm::dot(z, z);
+    // A Jacobian formula's columns start as the identity (a 4D orbit's w does not move with p).
+    Orbit orbit{start, c, {glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0)}, 1.0, 0};
+    const glm::dvec4& z = orbit.z;
+    double r2 = glm::dot(z, z);
     glm::dvec4 trap(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2);
     int i = 0;
     Scratch scratch;
-    // A Jacobian formula's columns start as the identity (a 4D orbit's w does not move with p).
     std::unique_ptr<TangentScratch> tangents;
-    Orbit orbit{z, c, {glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0)}, 1.0, 0};
     if (prog.jacobian) tangents = std::make_unique<TangentScratch>();
     do {
         for (const auto& seg : prog.segments)
             for (int n = 0; (seg.count == 0 || n < seg.count) && i < iterations; ++n, ++i) {
                 if (r2 > bail2) break;
-                if (prog.jacobian) {
-                    orbit.iteration = i;
-                    iterate_jacobian(seg.group, in, orbit, bias, scratch, *tangents);
-                    z = orbit.z;
-                    dr = orbit.dr;
-                } else {
-                    iterate(seg.group, in, c, z, dr, bias, scratch);
-                }
+                orbit.iteration = i;
+                if (prog.jacobian) iterate_jacobian(seg.group, in, orbit, bias, scratch, *tangents);
+                else iterate(seg.group, in, orbit, bias, scratch);
                 r2 = glm::dot(z, z);
                 trap = glm::min(trap, glm::dvec4(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2));
             }
     } while (prog.repeat && i < iterations && r2 <= bail2);
-    const double r = std::sqrt(r2);
+    const double r = std::sqrt(r2), dr = orbit.dr;
     double distance = (r - prog.linear_radius) / std::max(dr, kTiny);
     switch (prog.estimate) {
         case FormulaProgram::Estimate::Linear: break;

@@ -34,15 +34,16 @@ private:
         double d[kMaxStages];
         CpuValue args[kMaxStageInputs];
     };
-    void iterate(int group, const CpuValue* in, glm::dvec4 c, glm::dvec4& z, double& dr, double bias, Scratch& s) const;
-
-    // A Jacobian formula's pass: `columns` are dz/dp over dr, moved by each node's tangent rule.
+    // The orbit between iterations: `columns` (Jacobian formulas) are dz/dp over dr.
     struct Orbit {
         glm::dvec4 z, c;
         glm::dvec4 columns[3];
         double dr;
         int iteration;
     };
+    CpuValue argument(const FormulaArg& a, const CpuValue* in, const Orbit& orbit, const Scratch& s) const;
+    void iterate(int group, const CpuValue* in, Orbit& orbit, double bias, Scratch& s) const;
+    // A Jacobian formula's pass: each node's tangent rule moves the columns.
     struct TangentScratch {
         CpuValue tangents[kMaxStages][kMaxStageOutputs][3];
         CpuValue args[kMaxStageInputs];

@@ -13,18 +13,14 @@ void fg_stage_triplex_power_elevation(vec3 z, float power, float theta_offset_de
 void fg_stage_triplex_power_elevation_tangent(vec3 z, float power, float theta_offset_deg, float phi_offset_deg,
                                               vec3 d_z, OUT(vec3) d_raised)
 {
-    // z = r (cos t cos f, sin t, cos t sin f) with t = asin(y / r), f = atan(z, x), each plus its offset.
+    // z = r (cos t cos f, sin t, cos t sin f) with t = asin(y / r), f = atan(z, x), each plus its
+    // offset: the elevation falls as the colatitude grows, and this longitude turns the other way.
+    vec3 d = fg_polar_tangent(z, d_z);
     float r = max(length(z), FG_TINY);
-    float rho2 = z.x * z.x + z.z * z.z;
-    float rho = sqrt(rho2);
-    float d_r = dot(z, d_z) / r;
-    float d_t = fg_safe_div(d_z.y * r - z.y * d_r, r * rho);
-    float d_f = fg_safe_div(z.x * d_z.z - z.z * d_z.x, rho2);
     float t = (asin(clamp(fg_safe_div(z.y, r), -1.0, 1.0)) + theta_offset_deg * (FG_PI / 180.0)) * power;
     float f = (fg_safe_atan(z.z, z.x) + phi_offset_deg * (FG_PI / 180.0)) * power;
-    float rn = pow(r, power);
     vec3 dir = vec3(cos(t) * cos(f), sin(t), cos(t) * sin(f));
     vec3 along_t = vec3(-sin(t) * cos(f), cos(t), -sin(t) * sin(f));
     vec3 along_f = vec3(-cos(t) * sin(f), 0.0, cos(t) * cos(f));
-    d_raised = power * (rn / r * d_r * dir + rn * (d_t * along_t + d_f * along_f));
+    d_raised = power * pow(r, power) * (d.x / r * dir - d.y * along_t - d.z * along_f);
 }

@@ -15,12 +15,9 @@ void fg_stage_xenodreambuie_tangent(vec3 z, float power, float theta_offset_deg,
 {
     // As the triplex power, with t = acos(y / r) folded into [-90, 90] degrees (the fold mirrors
     // t, so its change turns sign) and f = atan(-z, x).
+    vec3 d = fg_polar_tangent(z, d_z);
+    float d_t = d.y;
     float r = max(length(z), FG_TINY);
-    float rho2 = z.x * z.x + z.z * z.z;
-    float rho = sqrt(rho2);
-    float d_r = dot(z, d_z) / r;
-    float d_t = -fg_safe_div(d_z.y * r - z.y * d_r, r * rho);
-    float d_f = fg_safe_div(z.z * d_z.x - z.x * d_z.z, rho2);
     float t = fg_safe_acos(fg_safe_div(z.y, r)) + theta_offset_deg * (FG_PI / 180.0);
     if (abs(t) > 0.5 * FG_PI) {
         t = (t > 0.0 ? FG_PI : -FG_PI) - t;
@@ -29,9 +26,8 @@ void fg_stage_xenodreambuie_tangent(vec3 z, float power, float theta_offset_deg,
     float f = fg_safe_atan(-z.z, z.x) + phi_offset_deg * (FG_PI / 180.0);
     t *= power;
     f *= power;
-    float rn = pow(r, power);
     vec3 dir = vec3(cos(f) * sin(t), cos(t), -sin(f) * sin(t));
     vec3 along_t = vec3(cos(f) * cos(t), -sin(t), -sin(f) * cos(t));
     vec3 along_f = vec3(-sin(f) * sin(t), 0.0, -cos(f) * sin(t));
-    d_raised = power * (rn / r * d_r * dir + rn * (d_t * along_t + d_f * along_f));
+    d_raised = power * pow(r, power) * (d.x / r * dir + d_t * along_t + d.z * along_f);
 }

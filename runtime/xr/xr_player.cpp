@@ -387,7 +387,8 @@ private:
             slot.height = sv.centre.height;
         }
         if (executor_ == slot.executor.get()) return;
-        // Its history is from when its level last ran, another view.
+        // Its history is from when its level last ran, another view. The level before's is not
+        // taken either: resampled to this size it scores below a fresh frame (docs/vr.md).
         if (executor_) slot.executor->forget_history();
         executor_ = slot.executor.get();
         masks_dirty_ = true;

@@ -223,22 +223,15 @@ TEST(Jacobian, the_carried_derivative_bounds_the_largest_stretch_of_the_iterated
     }
 }
 
-json formula_graph(const json& formula) {
-    json g = fg::test::minimal_graph();
-    g["nodes"][0] = {{"id", "f"}, {"type", "fractal.formula"}, {"formula", formula}};
-    g["outputs"]["distance"] = "f.distance";
-    return g;
-}
-
 TEST(Jacobian, mistakes_in_a_maths_body_are_errors_at_their_pointer) {
     const std::string at = "/nodes/0/formula";
     // A node that has no tangent rule: a jump has no derivative to carry.
-    auto diag = fg::test::check_front(formula_graph(json::parse(R"({"groups": [{"name": "a", "nodes": [
+    auto diag = fg::test::check_front(fg::test::formula_graph(json::parse(R"({"groups": [{"name": "a", "nodes": [
         {"id": "o", "type": "stage.orbit"}, {"id": "f", "type": "math.floor", "inputs": {"x": "o.z"}}]}]})")));
     EXPECT_TRUE(has_error(diag, at + "/groups/0/nodes/1/type", "f", "maths nodes with a tangent rule"));
 
     // An input its tangent rule holds constant, fed the orbit; a stage's gain, which has no tangent.
-    diag = fg::test::check_front(formula_graph(json::parse(R"({"groups": [{"name": "a", "nodes": [
+    diag = fg::test::check_front(fg::test::formula_graph(json::parse(R"({"groups": [{"name": "a", "nodes": [
         {"id": "o", "type": "stage.orbit"},
         {"id": "parts", "type": "math.split", "inputs": {"v": "o.z"}},
         {"id": "soft", "type": "math.smoothstep", "inputs": {"edge0": "parts.x", "x": "o.z"}},
@@ -248,7 +241,7 @@ TEST(Jacobian, mistakes_in_a_maths_body_are_errors_at_their_pointer) {
     EXPECT_TRUE(has_error(diag, at + "/groups/0/nodes/4/inputs/s", "f", "has no tangent rule"));
 
     // Operands of two types; a group leaving with a number; maths under a scalar derivative.
-    diag = fg::test::check_front(formula_graph(json::parse(R"({"derivative": "scalar", "groups": [{"name": "a", "nodes": [
+    diag = fg::test::check_front(fg::test::formula_graph(json::parse(R"({"derivative": "scalar", "groups": [{"name": "a", "nodes": [
         {"id": "o", "type": "stage.orbit"},
         {"id": "parts", "type": "math.split", "inputs": {"v": "o.z"}},
         {"id": "sum", "type": "math.add", "inputs": {"a": "o.z", "b": "parts.x"}},

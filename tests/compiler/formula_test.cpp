@@ -250,13 +250,6 @@ TEST(Formula, a_hybrid_runs_its_schedule_and_compiles) {
     for (double x = -6.0; x <= 6.0; x += 0.5) EXPECT_TRUE(std::isfinite(ev->distance({x, 0.1, -0.2}))) << x;
 }
 
-json formula_graph(const json& formula) {
-    json g = fg::test::minimal_graph();
-    g["nodes"][0] = {{"id", "f"}, {"type", "fractal.formula"}, {"formula", formula}};
-    g["outputs"]["distance"] = "f.distance";
-    return g;
-}
-
 TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {
     // A stage outside a formula.
     json g = fg::test::minimal_graph();
@@ -265,14 +258,14 @@ TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {
 
     // A node that is not a stage inside a body.
     auto body = json::parse(R"({"groups": [{"name": "g", "nodes": [{"id": "s", "type": "prim.sphere"}]}]})");
-    EXPECT_TRUE(has_error(fg::test::check_front(formula_graph(body)), "/nodes/0/formula/groups/0/nodes/0/type", "f",
+    EXPECT_TRUE(has_error(fg::test::check_front(fg::test::formula_graph(body)), "/nodes/0/formula/groups/0/nodes/0/type", "f",
                           "holds stage.* nodes"));
 
     // A schedule naming no group, and a segment without a count before the last.
     body = json::parse(R"({"groups": [{"name": "a", "nodes": [{"id": "s", "type": "stage.abs_fold"}]},
                                       {"name": "b", "nodes": [{"id": "t", "type": "stage.scale"}]}],
                            "schedule": [{"group": "a"}, {"group": "c", "count": 2}]})");
-    auto diag = fg::test::check_front(formula_graph(body));
+    auto diag = fg::test::check_front(fg::test::formula_graph(body));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/schedule/1/group", "f", "no group \"c\""));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/schedule/0", "f", "only the last segment"));
 
@@ -280,26 +273,26 @@ TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {
     body = json::parse(R"({"groups": [{"name": "a", "nodes": [{"id": "s", "type": "stage.abs_fold"}]},
                                       {"name": "b", "nodes": [{"id": "t", "type": "stage.scale", "inputs": {"z": "s", "scale": "s.z"}}]}],
                            "schedule": [{"group": "a", "count": 1}, {"group": "b"}]})");
-    diag = fg::test::check_front(formula_graph(body));
+    diag = fg::test::check_front(fg::test::formula_graph(body));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/1/nodes/0/inputs/z", "f", "not a node of this group"));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/1/nodes/0/inputs/scale", "f", "not a node of this group"));
 
     // A stage's parameter taken from the orbit: a stage's derivative rule covers only its z.
     body = json::parse(R"({"derivative": "scalar", "groups": [{"name": "a", "nodes": [{"id": "s", "type": "stage.abs_fold"},
         {"id": "t", "type": "stage.translate", "inputs": {"z": "s", "offset": "s"}}]}]})");
-    diag = fg::test::check_front(formula_graph(body));
+    diag = fg::test::check_front(fg::test::formula_graph(body));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/1/inputs/offset", "f", "covers only its z"));
 
     // A cycle through z, and an unknown parameter.
     body = json::parse(R"({"groups": [{"name": "a", "nodes": [
         {"id": "s", "type": "stage.abs_fold", "inputs": {"z": "t"}},
         {"id": "t", "type": "stage.scale", "inputs": {"z": "s", "scale": "$nope"}}]}]})");
-    diag = fg::test::check_front(formula_graph(body));
+    diag = fg::test::check_front(fg::test::formula_graph(body));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/1/inputs/z", "f", "cycle"));
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/1/inputs/scale", "f", "unknown parameter \"$nope\""));
 
     // A parameter of the wrong type for the stage's port (a float one is broadcast to a vector port).
-    g = formula_graph(json::parse(R"({"groups": [{"name": "a", "nodes": [
+    g = fg::test::formula_graph(json::parse(R"({"groups": [{"name": "a", "nodes": [
         {"id": "s", "type": "stage.scale", "inputs": {"scale": "$corner"}},
         {"id": "t", "type": "stage.translate", "inputs": {"z": "s", "offset": "$radius"}}]}]})"));
     g["params"]["corner"] = {{"type", "vec3"}, {"default", {1.0, 1.0, 1.0}}};
@@ -308,7 +301,7 @@ TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {
     EXPECT_EQ(diag.error_count(), 1u) << diag.format();
 
     // 3D and quaternion stages in one orbit; a cube seed for a 4D orbit.
-    g = formula_graph(json::parse(R"({"estimate": "box", "groups": [{"name": "a", "nodes": [
+    g = fg::test::formula_graph(json::parse(R"({"estimate": "box", "groups": [{"name": "a", "nodes": [
         {"id": "s", "type": "stage.abs_fold"}, {"id": "q", "type": "stage.quaternion_square"}]}]})"));
     diag = fg::test::check_front(g);
     EXPECT_TRUE(has_error(diag, "/nodes/0/formula/groups/0/nodes/1/type", "f", "one kind of orbit"));

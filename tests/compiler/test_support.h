@@ -31,6 +31,14 @@ inline nlohmann::json minimal_graph() {
     })");
 }
 
+// The minimal graph with its first node a fractal.formula "f" of body `formula`, whose distance it shows.
+inline nlohmann::json formula_graph(const nlohmann::json& formula) {
+    nlohmann::json g = minimal_graph();
+    g["nodes"][0] = {{"id", "f"}, {"type", "fractal.formula"}, {"formula", formula}};
+    g["outputs"]["distance"] = "f.distance";
+    return g;
+}
+
 // The graphs (.json) in a folder of the source tree, sorted.
 inline std::vector<std::string> graph_files(const std::string& folder) {
     std::vector<std::string> out;
