@@ -126,7 +126,8 @@ run_fuzzers() {
 # names file and line) and the tests under them. Left out (docs/testing.md): the gallery's frame
 # hashes (the same passes run in the other runtime tests), the studio in Chromium and the Slurm
 # cluster (a browser and daemons, not our code), the 8K EXR memory bound (it bounds the plain
-# build; ASan doubles the heap), fgplay's benchmark sweep (5 min under ASan), every truncation of
+# build; ASan doubles the heap), fgplay's benchmark sweep (5 min under ASan) and its quick headset
+# sequence (222 s; the timed sequence test runs its code on one trace under ASan), every truncation of
 # a pack (90 s; the pack reader's fuzzer covers it under ASan), the 2048x2056 eye whose tile list
 # takes two dispatch rows (58 s; its host code is the other FoveatedTiles tests', its rows the GPU's)
 # and the same for frames against whole-image dispatches (39 s), and compiling the whole gallery in
@@ -135,7 +136,7 @@ run_fuzzers() {
 # .deb (a packaging check: an instrumented .deb is not what users get), and the export's closed-form
 # meshes (millions of triangles at the default resolution; the gallery and shard export tests run
 # the same sampler, mesher and writers under ASan on smaller meshes).
-SANITIZE_SKIP='^install\.|^FrameHashes\.|^studio\.browser|^slurm\.|^ExrOutput\.an_8k|^fgplay\.renders_refuses_bad_packs_and_benchmarks$|^Pack\.every_truncation|^FoveatedTiles\.an_eye_of_more_tiles_than_a_dispatch_row|^FoveatedTiles\.frames_are_bit_identical_to_dispatches_over_the_whole_image$|^Compile\.every_gallery_graph_compiles|^DoublePrecision\.the_gallery_compiles_in_double|^export\.sphere_torus_and_sponge_meshes_match_their_closed_forms$'
+SANITIZE_SKIP='^install\.|^FrameHashes\.|^studio\.browser|^slurm\.|^ExrOutput\.an_8k|^fgplay\.renders_refuses_bad_packs_and_benchmarks$|^fgplay\.bench_sequence_quick_reports_every_trace_and_setting$|^Pack\.every_truncation|^FoveatedTiles\.an_eye_of_more_tiles_than_a_dispatch_row|^FoveatedTiles\.frames_are_bit_identical_to_dispatches_over_the_whole_image$|^Compile\.every_gallery_graph_compiles|^DoublePrecision\.the_gallery_compiles_in_double|^export\.sphere_torus_and_sponge_meshes_match_their_closed_forms$'
 SANITIZE_BUILD=$BUILD-sanitize
 build_sanitized() {
   local san=$SANITIZE_BUILD
