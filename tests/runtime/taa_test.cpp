@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "offline/jittered_samples.h"
+#include "offline/linear_light.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -69,6 +70,38 @@ TEST_F(Taa, a_head_that_stops_converges_to_sixteen_samples) {
     EXPECT_GE(still[15], 38.0) << figures;
     EXPECT_GE(still[31], still[15]) << figures;
     EXPECT_GE(still[0], one) << "no frame worse than one sample: " << figures;
+}
+
+// The picture's mean in linear light.
+double linear_mean(const Rgba8Image& image) {
+    const auto& table = srgb8_linear_table();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.pixels.size(); i += 4)
+        sum += table[image.pixels[i]] + table[image.pixels[i + 1]] + table[image.pixels[i + 2]];
+    return sum / (3.0 * static_cast<double>(image.pixels.size() / 4));
+}
+
+TEST_F(Taa, a_still_head_keeps_its_brightness_for_three_hundred_frames) {
+    constexpr std::uint32_t kStill = 64;
+    FrameSettings with = settings(true), without = settings(false);
+    with.width = with.height = without.width = without.height = kStill;
+    HeadlessRenderer taa(test::shared_context(), bulb(), with, StereoSettings{kStill, kStill});
+    HeadlessRenderer plain(test::shared_context(), bulb(), without, StereoSettings{kStill, kStill});
+    const HeadPose head = turning(0, 0.0);
+    const double reference = linear_mean(render_samples(plain, head, 0.0, 0, 16).left);
+    double worst = 0.0, at_31 = 0.0, at_299 = 0.0;
+    for (std::uint32_t i = 0; i < 300; ++i) {
+        const double ratio = linear_mean(taa.render(head, 0.0, i).left) / reference;
+        if (i >= 31) worst = std::max(worst, std::abs(ratio - 1.0));
+        if (i == 31) at_31 = ratio;
+        if (i == 299) at_299 = ratio;
+    }
+    const std::string figures = fmt::format("still bulb at {}^2, linear mean against 16 samples: frame 31 {:.4f}, frame 299 "
+                                            "{:.4f}, worst after frame 31 {:.2f} %",
+                                            kStill, at_31, at_299, 100.0 * worst);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_LE(worst, 0.005) << figures;
 }
 
 TEST_F(Taa, a_turning_head_stays_closer_to_sixteen_samples_than_one_sample) {

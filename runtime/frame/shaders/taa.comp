@@ -39,9 +39,9 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, rgba8) uniform readonly image2D fg_jittered;     // this frame, display-encoded, marched size
 layout(set = 0, binding = 4, r32f) uniform readonly image2D fg_depth;         // this frame's hit distances
-layout(set = 0, binding = 5, rgba16f) uniform readonly image2D fg_history;    // the previous result, linear; alpha: weight
+layout(set = 0, binding = 5, rgba32f) uniform readonly image2D fg_history;    // the previous result, linear; alpha: weight
 layout(set = 0, binding = 6, r32f) uniform readonly image2D fg_history_depth;
-layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D fg_resolved;  // this frame's result, output size
+layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D fg_resolved;  // this frame's result, output size
 layout(set = 0, binding = 8, r32f) uniform writeonly image2D fg_resolved_depth;
 layout(set = 0, binding = 9, rgba8) uniform writeonly image2D fg_final;       // the result, display-encoded
 layout(push_constant) uniform FgTaaPush { TaaPush pc; };
