@@ -186,6 +186,11 @@ public:
     }
 
 private:
+    struct LevelExecutor {
+        std::unique_ptr<FrameExecutor> executor;
+        std::uint32_t width = 0, height = 0;   // the centre view it was built for
+    };
+
     SessionAction poll_events() {
         while (true) {
             XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER};
@@ -377,21 +382,27 @@ private:
     // level change swaps executors and waits for nothing; only a new field of view (a new size)
     // builds one again.
     void select_executor(const StereoViews& sv) {
-        LevelExecutor& slot = executors_[options_.governor ? governor_->level() : 0];
-        if (!slot.executor || slot.width != sv.centre.width || slot.height != sv.centre.height) {
-            if (slot.executor) ctx_.wait_idle();   // a present may still read its images
-            if (executor_ == slot.executor.get()) executor_ = nullptr;
-            slot.executor = std::make_unique<FrameExecutor>(
-                ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
-            slot.width = sv.centre.width;
-            slot.height = sv.centre.height;
-        }
+        LevelExecutor& slot = level_executor(options_.governor ? governor_->level() : 0, sv);
         if (executor_ == slot.executor.get()) return;
         // Its history is from when its level last ran, another view. The level before's is not
         // taken either: resampled to this size it scores below a fresh frame (docs/vr.md).
         if (executor_) slot.executor->forget_history();
         executor_ = slot.executor.get();
         masks_dirty_ = true;
+    }
+
+    // The executor of `level` for the current frame settings, built where it has none for these
+    // views' size.
+    LevelExecutor& level_executor(int level, const StereoViews& sv) {
+        LevelExecutor& slot = executors_[level];
+        if (slot.executor && slot.width == sv.centre.width && slot.height == sv.centre.height) return slot;
+        if (slot.executor) ctx_.wait_idle();   // a present may still read its images
+        if (executor_ == slot.executor.get()) executor_ = nullptr;
+        slot.executor = std::make_unique<FrameExecutor>(
+            ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
+        slot.width = sv.centre.width;
+        slot.height = sv.centre.height;
+        return slot;
     }
 
     // The headset's own visibility mask, where it gives one, as the frame graph's lens mask: pixels
@@ -415,11 +426,7 @@ private:
             apply(governor_->ladder()[static_cast<std::size_t>(level)]);
             set_marched_size(stereo_, frame_);
             const StereoViews sv = make_stereo_views(head, left, right, stereo_);
-            LevelExecutor& slot = executors_[level];
-            slot.executor = std::make_unique<FrameExecutor>(
-                ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
-            slot.width = sv.centre.width;
-            slot.height = sv.centre.height;
+            LevelExecutor& slot = level_executor(level, sv);
             // With the lens mask, so that its tile lists' passes are compiled too.
             update_lens_masks(sv);
             GpuFrame gpu = make_gpu_frame(sv, slot.executor->graph().settings, 0.0, viewer.world_scale, 0);
@@ -539,10 +546,6 @@ private:
     DepthProjection depth_projection_;
     FrameSettings frame_;
     StereoSettings stereo_;
-    struct LevelExecutor {
-        std::unique_ptr<FrameExecutor> executor;
-        std::uint32_t width = 0, height = 0;   // the centre view it was built for
-    };
     PipelineStore pipelines_;
     std::map<int, LevelExecutor> executors_;   // per governor level (0 without the governor)
     FrameExecutor* executor_ = nullptr;        // the one in use
