@@ -4,7 +4,8 @@
 #   bash scripts/fractograph.sh test   install, build, run every test; again under ASan + UBSan; each
 #                                      fuzzer for a minute (scripts/fuzz.sh SECONDS for long runs)
 #   bash scripts/fractograph.sh build  install and build the tools only (no tests)
-#   bash scripts/fractograph.sh packages demo|test   the Debian packages that command installs
+#   bash scripts/fractograph.sh bench  install what the benchmark scripts need too, and build (bench/)
+#   bash scripts/fractograph.sh packages demo|test|bench   the Debian packages that command installs
 # Idempotent: packages already installed are not touched, and a built tree only rebuilds what changed.
 set -euo pipefail
 
@@ -20,6 +21,8 @@ LIB_PACKAGES=(glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev 
   libboost-dev)  # OpenVDB's headers include Boost's, but Debian 12's libopenvdb-dev does not depend on it
 TEST_PACKAGES=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3-matplotlib python3-jsonschema clang
   libclang-rt-14-dev chromium slurm-wlm munge python3-openvdb python3-vtk9 admesh time)
+# The benchmark scripts' picture scores (SSIM) and plots, beyond the tests' packages.
+BENCH_PACKAGES=(python3-skimage python3-matplotlib)
 
 # Node.js and npm for the studio's page, when the machine has no npm of its own.
 STUDIO_PACKAGES=(nodejs npm)
@@ -29,7 +32,8 @@ packages_of() {
   case "$1" in
     demo|build) printf '%s\n' "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${STUDIO_PACKAGES[@]}" ;;
     test) printf '%s\n' "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${STUDIO_PACKAGES[@]}" "${TEST_PACKAGES[@]}" ;;
-    *) echo "packages of demo or test, not '$1'" >&2; exit 2 ;;
+    bench) packages_of test; printf '%s\n' "${BENCH_PACKAGES[@]}" ;;
+    *) echo "packages of demo, test or bench, not '$1'" >&2; exit 2 ;;
   esac
 }
 
@@ -210,6 +214,7 @@ case "${1:-}" in
   demo) demo ;;
   test) test_all ;;
   build) install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}"; build ;;
+  bench) install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"; build tests ;;
   packages) packages_of "${2:-test}" ;;
-  *) echo "usage: $0 demo|test|build|packages [demo|test]" >&2; exit 2 ;;
+  *) echo "usage: $0 demo|test|build|bench|packages [demo|test|bench]" >&2; exit 2 ;;
 esac

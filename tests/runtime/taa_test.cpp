@@ -1,7 +1,7 @@
 // Temporal anti-aliasing (FrameSettings::taa, taa.comp), judged against 16 jittered samples per
 // pixel of the same pose (the reference every frame would converge to): a head that stops converges
 // above 38 dB within 16 frames; a head turning at 30 degrees a second stays closer to the reference
-// than one sample per pixel; a pillar passing in front of a wall leaves no trail two frames after
+// than one sample per pixel; a slowly circling head keeps the reference's detail; a pillar passing in front of a wall leaves no trail two frames after
 // it has gone; a changed parameter starts from the new frame alone; a scene that reads time gets
 // plain frames. Upsampled from 1/1.5 and 1/2 of the output per axis: a still head refines to the
 // output's 16 samples; a turning head keeps its history where the view moved it.
@@ -122,6 +122,50 @@ TEST_F(Taa, a_turning_head_stays_closer_to_sixteen_samples_than_one_sample) {
     RecordProperty("figures", figures);
     std::printf("%s\n", figures.c_str());
     EXPECT_GE(median(with), median(without) + 1.0) << figures;
+}
+
+// How much fine structure a picture shows: the mean squared difference of neighbouring pixels'
+// luma (8-bit levels). Blur lowers it; noise and aliasing raise it.
+double gradient_energy(const Rgba8Image& image) {
+    const auto luma = [&](std::uint32_t x, std::uint32_t y) {
+        const std::uint8_t* p = &image.pixels[4 * (static_cast<std::size_t>(y) * image.width + x)];
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    };
+    double sum = 0.0;
+    for (std::uint32_t y = 0; y + 1 < image.height; ++y)
+        for (std::uint32_t x = 0; x + 1 < image.width; ++x)
+            sum += std::pow(luma(x + 1, y) - luma(x, y), 2) + std::pow(luma(x, y + 1) - luma(x, y), 2);
+    return sum / static_cast<double>((image.width - 1) * (image.height - 1));
+}
+
+TEST_F(Taa, a_slowly_circling_head_keeps_the_detail_of_sixteen_samples) {
+    // The gallery Julia circled at 0.1-0.4 pixels a frame, the motion at which every frame resamples
+    // the history by a fraction of a texel and a soft filter's loss compounds (Catmull-Rom: detail
+    // 0.69 of the reference's, 2.3 dB over one sample).
+    static Pack julia = test::compile_pack(test::read_source_file("graphs/gallery/julia.json"));
+    HeadlessRenderer taa(test::shared_context(), julia, settings(true), StereoSettings{kSize, kSize});
+    HeadlessRenderer plain(test::shared_context(), julia, settings(false), StereoSettings{kSize, kSize});
+    const glm::dvec3 back(0.6, 1.3, 3.0);
+    std::vector<double> with, without, detail;
+    for (int i = 0; i < 32; ++i) {
+        const double angle = glm::radians(50.0 / 90.0 * i);
+        const HeadPose head = look_at(glm::dvec3(back.x * std::cos(angle) + back.z * std::sin(angle), back.y,
+                                                 back.z * std::cos(angle) - back.x * std::sin(angle)),
+                                      glm::dvec3(0.0));
+        Rgba8Image resolved = taa.render(head, 0.0, static_cast<std::uint32_t>(i)).left;
+        if (i < 16 || i % 4 != 3) continue;   // the history fills
+        Rgba8Image reference = render_samples(plain, head, 0.0, 0, 16).left;
+        with.push_back(test::psnr(resolved, reference));
+        without.push_back(test::psnr(plain.render(head, 0.0).left, reference));
+        detail.push_back(gradient_energy(resolved) / gradient_energy(reference));
+    }
+    std::string figures = fmt::format("Julia circled at 50 deg/s and 90 Hz, {}^2, median of frames 19-31 against 16 samples: "
+                                      "TAA {:.1f} dB, 1 spp {:.1f} dB; TAA's detail {:.3f} of the reference's",
+                                      kSize, median(with), median(without), median(detail));
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_GE(median(with), median(without) + 3.0) << figures;
+    EXPECT_GE(median(detail), 0.8) << figures;
 }
 
 TEST_F(Taa, a_pillar_passing_a_wall_leaves_no_trail_after_two_frames) {
