@@ -20,6 +20,7 @@ add_library(fg_bench STATIC
   ${PROJECT_SOURCE_DIR}/bench/head_trace.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_settings.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_report.cpp
+  ${PROJECT_SOURCE_DIR}/bench/equal_picture.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_trade_offs.cpp
   ${PROJECT_SOURCE_DIR}/bench/sequence_runner.cpp
   ${PROJECT_SOURCE_DIR}/bench/gpu_clock.cpp

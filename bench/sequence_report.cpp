@@ -12,6 +12,7 @@
 #include <set>
 #include <tuple>
 
+#include "equal_picture.h"
 #include "frame_measures.h"
 #include "head_trace.h"
 #include "plot_script.h"
@@ -229,6 +230,7 @@ void SequenceReport::write(const std::string& folder) const {
             wall_s / 60.0, load_start, load_end);
     md << "| trace | motion |\n|---|---|\n";
     for (const auto& [name, motion] : traces) md << fmt::format("| {} | {} |\n", name, motion);
+    md << equal_picture_markdown(cheapest_at_naive_picture(rows));
     md << "\n## Per-eye conemarch against naive\n\nSpeed-up in GPU time per frame (×): on all pixels; with the "
        << kMaskedPixels
        << " against naive with the same; and the same again against naive on all pixels (what the "

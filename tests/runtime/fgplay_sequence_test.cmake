@@ -187,7 +187,7 @@ if(json_error OR rows_error OR NOT front_length GREATER 0 OR NOT row_count EQUAL
 endif()
 
 file(READ ${WORK}/seq/sequence.md table)
-if(NOT table MATCHES "Per-eye conemarch against naive" OR NOT table MATCHES "The frame governor's ladder")
+if(NOT table MATCHES "Time at naive.s picture" OR NOT table MATCHES "Per-eye conemarch against naive" OR NOT table MATCHES "The frame governor.s ladder")
   message(FATAL_ERROR "sequence.md has no headline table:\n${table}")
 endif()
 fg_test_passed()
