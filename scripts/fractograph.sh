@@ -186,8 +186,8 @@ run_tests() {
 }
 
 # `test` times each stage against a budget in minutes (measured on 2 cores with the packages
-# installed, plus a margin; they add up to 45), so a stage that grows says so in the log long
-# before the whole run nears CI's 90-minute limit.
+# installed and ccache holding the objects of an earlier build, plus a margin; they add up to 45),
+# so a stage that grows says so in the log long before the whole run nears CI's 90-minute limit.
 STAGE_TIMES=()
 stage() {
   local name=$1 budget=$2 start=$SECONDS
@@ -204,12 +204,12 @@ stage() {
 
 test_all() {
   local start=$SECONDS
-  stage "install packages" 4 install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
-  stage "build" 9 build tests
-  stage "tests" 8 run_tests
-  stage "sanitizer build" 9 build_sanitized
-  stage "sanitizer tests" 12 run_sanitized_tests
-  stage "fuzzers" 3 run_fuzzers
+  stage "install packages" 2 install_packages "${BUILD_PACKAGES[@]}" "${LIB_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
+  stage "build" 6 build tests
+  stage "tests" 14 run_tests
+  stage "sanitizer build" 5 build_sanitized
+  stage "sanitizer tests" 16 run_sanitized_tests
+  stage "fuzzers" 2 run_fuzzers
   say "all tests passed in $(((SECONDS - start) / 60)) min (budget 45):"
   printf '%s\n' "${STAGE_TIMES[@]}"
 }
