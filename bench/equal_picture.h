@@ -3,7 +3,6 @@
 // picture is at least as close to the ground truth as naive sphere tracing at one sample per pixel
 // (median picture PSNR over the trace's frames), and its time against naive's. What a user wants
 // to know: how much faster the same picture comes, or whether it comes at all.
-#include <optional>
 #include <string>
 #include <vector>
 
