@@ -226,7 +226,9 @@ int view(const ViewOptions& o) {
                     frame = settings_at_level(full_accuracy, governor->current(), o.width, o.height);
                     set_marched_size(stereo, frame);
                     ctx.wait_idle();
-                    playing.executor = build_executor(*playing.pack);
+                    auto next = build_executor(*playing.pack);
+                    next->take_history(*playing.executor);   // with TAA, the picture converged so far
+                    playing.executor = std::move(next);
                 }
                 if (!governor->message().empty()) {
                     fmt::print("governor: {}\n", governor->message());

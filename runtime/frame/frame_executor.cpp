@@ -343,7 +343,7 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
     frame_data_.previous[1] = previous_views_[1];
     frame_data_.reuse = graph_.reuse && history_valid_ ? 1u : 0u;
     frame_data_.shade_history = graph_.shade_history && history_valid_ ? 1u : 0u;
-    frame_data_.taa_history = graph_.taa && history_valid_ ? 1u : 0u;
+    frame_data_.taa_history = graph_.taa && (history_valid_ || taa_taken_) ? 1u : 0u;
     frame_data_.still_frames = 0u;
     if (frame_data_.taa_history && same_view_unjittered(frame_data_, previous_views_, previous_jitter_)) {
         frame_data_.still_frames = still_frames_ + 1;
@@ -359,12 +359,46 @@ void FrameExecutor::set_frame(const GpuFrame& frame) {
 // through set_frame: before the first frame the uniforms hold no frame to check.
 void FrameExecutor::forget_history() {
     history_valid_ = false;
+    taa_taken_ = false;
+    history_copies_.clear();
     frame_data_.reuse = 0u;
     frame_data_.shade_history = 0u;
     frame_data_.taa_history = 0u;
     frame_data_.still_frames = 0u;
     std::memcpy(frame_->data(), &frame_data_, sizeof frame_data_);
     frame_->flush();
+}
+
+bool FrameExecutor::take_history(const FrameExecutor& from) {
+    const std::vector<std::string> names = taa_history_images(graph_);
+    const bool holds = from.history_valid_ || from.taa_taken_;
+    if (names.empty() || !holds || taa_history_images(from.graph_) != names || graph_.output_width != from.graph_.output_width ||
+        graph_.output_height != from.graph_.output_height)
+        return false;
+    forget_history();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        // What `from` last resolved, or, where it took a history and has not run since, what it took.
+        const vk::StorageImage* source = from.history_copies_.empty() ? from.resolve_image(names[i], from.frames_run_ + 1)
+                                                                      : from.history_copies_[i].first;
+        history_copies_.emplace_back(source, resolve_image(previous(names[i]), frames_run_));
+    }
+    // The previous eyes unjittered and re-expressed in this graph's marched pixels: the taa pass
+    // finds a point's place in the history from them, this frame's marched size and its factor.
+    // Both marched frusta start at the output's top left, and an output pixel spans the same angle.
+    const glm::vec2 from_span = glm::vec2(from.frame_data_.eye_size) * static_cast<float>(from.graph_.settings.taa_upscale());
+    const glm::vec2 span = glm::vec2(graph_.width, graph_.height) * static_cast<float>(graph_.settings.taa_upscale());
+    for (int eye = 0; eye < 2; ++eye) {
+        GpuView v = from.previous_views_[eye];
+        const glm::vec4 f = unjittered_fov(v, from.previous_jitter_, from.frame_data_.eye_size);
+        const glm::vec2 per_pixel = glm::vec2(f.y - f.x, f.w - f.z) / from_span;
+        v.tan_fov = {f.x, f.x + per_pixel.x * span.x, f.w - per_pixel.y * span.y, f.w};
+        previous_views_[eye] = v;
+    }
+    previous_jitter_ = glm::vec2(0.0f);
+    still_frames_ = from.still_frames_;
+    history_frames_ = from.history_frames();
+    taa_taken_ = true;
+    return true;
 }
 
 void FrameExecutor::set_sampled_tiles(int view, std::optional<SampledTiles> sampled) {
@@ -470,6 +504,24 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
         vk::memory_barrier(cmd, vk::access::transfer_write, vk::access::compute_read_write);
         images_initialised_ = true;
     }
+    if (!history_copies_.empty()) {
+        // Another executor's passes wrote the sources in an earlier submission (take_history). Both
+        // images go back to GENERAL, the layout their passes and trackers expect.
+        const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        for (const auto& [source, target] : history_copies_) {
+            vk::image_layout_barrier(cmd, source->handle(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                     vk::access::anything, vk::access::transfer_read);
+            vk::image_layout_barrier(cmd, target->handle(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                     vk::access::anything, vk::access::transfer_write);
+            VkImageCopy region{layers, {0, 0, 0}, layers, {0, 0, 0}, {target->extent().width, target->extent().height, 1}};
+            vkCmdCopyImage(cmd, source->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target->handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            vk::image_layout_barrier(cmd, source->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                                     vk::access::transfer_read, vk::access::anything);
+            vk::image_layout_barrier(cmd, target->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                                     vk::access::transfer_write, vk::access::compute_read_write);
+        }
+    }
     // What earlier frames (earlier submissions) wrote or read, before this frame touches it again:
     // history images are read, every other image is overwritten.
     vk::memory_barrier(cmd, {kPassAccess.stage | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kPassAccess.access | VK_ACCESS_2_TRANSFER_READ_BIT},
@@ -543,8 +595,10 @@ FrameStats FrameExecutor::run() {
     previous_views_[1] = frame_data_.views[FG_VIEW_RIGHT];
     previous_jitter_ = {frame_data_.jitter.x, frame_data_.jitter.y};
     still_frames_ = frame_data_.still_frames;
-    history_frames_ = history_valid_ ? history_frames_ + 1 : 1;
+    history_frames_ = history_valid_ || taa_taken_ ? history_frames_ + 1 : 1;
     history_valid_ = true;
+    taa_taken_ = false;
+    history_copies_.clear();
     if (timer) stats.gpu_ms = timer->results();
     counters_->invalidate();
     const auto* counts = reinterpret_cast<const std::uint32_t*>(counters_->data());

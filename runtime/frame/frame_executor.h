@@ -69,6 +69,12 @@ public:
     // The previous frame no longer shows the points this one will (a looping scene wrapped the
     // head): nothing is taken from it (cross-frame reuse, shading history, temporal anti-aliasing).
     void forget_history();
+    // A governor level change: this executor's temporal anti-aliasing continues `from`'s history
+    // (both resolve to the same output size, whatever size each marches), so the first frame at
+    // the new level keeps the picture converged so far. The copy is recorded into the next run();
+    // the other histories (reuse, shading) start afresh. False, taking nothing, where the two
+    // cannot share one: either without TAA or without a history, or other output sizes.
+    bool take_history(const FrameExecutor& from);
 
     FrameStats run();
     // An image as the last frame left it; "<name>.previous" is a history image's frame before.
@@ -80,7 +86,7 @@ public:
     std::uint64_t frames_run() const { return frames_run_; }
     // Frames the history holds since it was last forgotten (0: none): temporal anti-aliasing takes
     // its jitter phase from it, so the first frame after a reset is the same for the same view.
-    std::uint64_t history_frames() const { return history_valid_ ? history_frames_ : 0; }
+    std::uint64_t history_frames() const { return history_valid_ || taa_taken_ ? history_frames_ : 0; }
     // The sub-pixel offset of the eyes' pixel grids for the next frame (StereoSettings::jitter):
     // temporal anti-aliasing's, from history_frames(); none without it.
     glm::dvec2 taa_jitter() const;
@@ -123,6 +129,10 @@ private:
     glm::vec2 previous_jitter_{0.0f};   // and their jitter
     std::uint32_t still_frames_ = 0;    // frames in a row that saw the last frame's view (GpuFrame)
     bool history_valid_ = false;
+    // Temporal anti-aliasing's history alone holds, taken from another executor (take_history),
+    // whose images the next run copies into this one's before its passes.
+    bool taa_taken_ = false;
+    std::vector<std::pair<const vk::StorageImage*, vk::StorageImage*>> history_copies_;
     std::uint64_t history_frames_ = 0;
     // The tile lists of the graph's tile buffers, remade only when what places them changes (at a
     // headset's resolution a list has tens of thousands of tiles) and written before the next frame.

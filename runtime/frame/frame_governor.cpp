@@ -100,15 +100,24 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
 FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& level, std::uint32_t width,
                                 std::uint32_t height) {
     FrameSettings f = full;
-    f.width = std::max(8u, static_cast<std::uint32_t>(std::lround(width * level.render_scale)));
-    f.height = std::max(8u, static_cast<std::uint32_t>(std::lround(height * level.render_scale)));
-    // The display's pixels set the detail at any render scale: a lower level shows the same fractal.
-    f.detail_scale = full.detail_scale * static_cast<double>(f.width) / width;
+    f.taa = level.taa.value_or(full.taa);
     f.foveation = level.foveation;
     f.stereo = level.stereo.value_or(full.stereo);
     f.cone_levels = level.cone_levels.value_or(full.cone_levels);
-    f.taa = level.taa.value_or(full.taa);
-    set_taa_upscale(f, f.taa ? level.taa_upscale.value_or(full.taa_upscale_factor) : 1.0);
+    if (f.taa) {
+        // Every level resolves to width x height and marches less by upsampling more: the history
+        // stays at one size, so a level change carries it over unresampled (FrameExecutor::
+        // take_history) and the first frame of a level keeps the picture converged so far.
+        f.width = width;
+        f.height = height;
+        set_taa_upscale(f, level.taa_upscale.value_or(full.taa_upscale_factor) / level.render_scale);
+    } else {
+        f.width = std::max(8u, static_cast<std::uint32_t>(std::lround(width * level.render_scale)));
+        f.height = std::max(8u, static_cast<std::uint32_t>(std::lround(height * level.render_scale)));
+        // The display's pixels set the detail at any render scale: a lower level shows the same fractal.
+        f.detail_scale = full.detail_scale * static_cast<double>(f.width) / width;
+        set_taa_upscale(f, 1.0);
+    }
     for (const auto& [k, v] : level.knobs) f.knobs[k] = v;
     return f;
 }

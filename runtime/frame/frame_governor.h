@@ -39,7 +39,8 @@ std::vector<GovernorLevel> governor_ladder(const PackManifest& manifest);
 
 // The frame settings at `level`: `full` (full accuracy) at the level's render scale of `width` x
 // `height`, with its foveation, and its stereo mode, cone levels, anti-aliasing and knobs where it
-// sets them (else full's: its taa_upscale_factor is the player's own upsampling).
+// sets them (else full's: its taa_upscale_factor is the player's own upsampling). With temporal
+// anti-aliasing every level shows width x height: its render scale divides the upsampling factor.
 FrameSettings settings_at_level(const FrameSettings& full, const GovernorLevel& level, std::uint32_t width,
                                 std::uint32_t height);
 

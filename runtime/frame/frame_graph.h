@@ -195,4 +195,8 @@ private:
 inline constexpr int kLeftView = FG_VIEW_LEFT, kRightView = FG_VIEW_RIGHT, kCentreView = FG_VIEW_CENTRE;
 const char* view_name(int view);
 
+// The images temporal anti-aliasing keeps into the next frame, at the output size (taa_pass.cpp):
+// what a frame graph of another render size can take over (FrameExecutor::take_history).
+std::vector<std::string> taa_history_images(const FrameGraph& graph);
+
 }  // namespace fg

@@ -24,6 +24,14 @@ void set_taa_upscale(FrameSettings& f, double factor) {
     f.detail_scale /= factor;
 }
 
+std::vector<std::string> taa_history_images(const FrameGraph& g) {
+    std::vector<std::string> names;
+    if (!g.taa) return names;
+    for (int view : g.output_views())
+        for (const char* kind : {"taa.", "taa_depth."}) names.push_back(kind + std::string(view_name(view)));
+    return names;
+}
+
 void add_taa_passes(FrameGraph& g) {
     if (!g.taa) return;
     const std::uint32_t w = g.output_width, h = g.output_height;

@@ -162,6 +162,9 @@ public:
     const LensEllipse& lens(int eye) const { return lenses_[eye]; }
     const CollisionWitness* witness() const { return witness_.get(); }
     const FrameGovernor& governor() const { return *governor_; }
+    // Level changes, and those whose new level continued the TAA history of the one before.
+    int level_changes() const { return level_changes_; }
+    int histories_taken() const { return histories_taken_; }
     bool has_depth_layer() const { return depth_[0] != nullptr; }
 
     // What the controls did over the session, for the log.
@@ -384,9 +387,13 @@ private:
     void select_executor(const StereoViews& sv) {
         LevelExecutor& slot = level_executor(options_.governor ? governor_->level() : 0, sv);
         if (executor_ == slot.executor.get()) return;
-        // Its history is from when its level last ran, another view. The level before's is not
-        // taken either: resampled to this size it scores below a fresh frame (docs/vr.md).
-        if (executor_) slot.executor->forget_history();
+        // Its own history is from when its level last ran, another view; with TAA it continues the
+        // level before's, which resolves to the same size (settings_at_level).
+        if (executor_) {
+            ++level_changes_;
+            if (slot.executor->take_history(*executor_)) ++histories_taken_;
+            else slot.executor->forget_history();
+        }
         executor_ = slot.executor.get();
         masks_dirty_ = true;
     }
@@ -550,6 +557,7 @@ private:
     std::map<int, LevelExecutor> executors_;   // per governor level (0 without the governor)
     FrameExecutor* executor_ = nullptr;        // the one in use
     bool levels_prepared_ = false;
+    int level_changes_ = 0, histories_taken_ = 0;
     XrTime first_time_ = 0, last_time_ = 0;
     std::unique_ptr<ControllerActions> actions_;
     double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0;
@@ -635,6 +643,9 @@ int play_xr(const XrPlayOptions& o) {
                 if (o.governor)
                     fmt::print("governor: ended at level {} of {} ({})\n", player.governor().level(),
                                player.governor().levels() - 1, player.governor().current().describe());
+                if (o.governor && o.taa)
+                    fmt::print("governor: {} of {} level changes continued the TAA history\n", player.histories_taken(),
+                               player.level_changes());
                 if (instance.has_visibility_mask()) {
                     auto skipped = [&](int eye) {
                         const auto& m = player.visibility_mask(eye);

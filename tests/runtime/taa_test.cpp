@@ -4,13 +4,15 @@
 // than one sample per pixel; a slowly circling head keeps the reference's detail; a pillar passing in front of a wall leaves no trail two frames after
 // it has gone; a changed parameter starts from the new frame alone; a scene that reads time gets
 // plain frames. Upsampled from 1/1.5 and 1/2 of the output per axis: a still head refines to the
-// output's 16 samples; a turning head keeps its history where the view moved it.
+// output's 16 samples; a turning head keeps its history where the view moved it. A governor level
+// change, to a render scale of 0.85 and back, keeps the picture converged so far.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
+#include "frame/frame_governor.h"
 #include "offline/jittered_samples.h"
 #include "offline/linear_light.h"
 #include "runtime_test_support.h"
@@ -339,4 +341,46 @@ TEST_F(Taa, an_upsampled_turning_head_keeps_its_history_where_it_moved) {
     RecordProperty("figures", figures);
     std::printf("%s\n", figures.c_str());
     EXPECT_GE(median(with), median(without) + 1.5) << figures;
+}
+
+TEST_F(Taa, a_governor_level_change_keeps_the_converged_picture) {
+    // The two levels resolve to the same 96^2: the lower marches 0.85 of it per axis (upsampling by
+    // 1/0.85, the default ladder's first step in scale) and continues the history of the level
+    // before, both ways. A level that started afresh would show one jittered sample per marched
+    // pixel. (From 1 to 0.7 the first frame lost 1.1 dB, less than that level's own 1.3 dB.)
+    FrameSettings full = settings(true);
+    GovernorLevel top, lower;
+    lower.render_scale = 0.85;
+    const FrameSettings at_top = settings_at_level(full, top, kSize, kSize), at_lower = settings_at_level(full, lower, kSize, kSize);
+    ASSERT_EQ(at_lower.shown_width(), kSize);
+    ASSERT_EQ(at_lower.width, 82u);   // 96 / (1 / 0.85), whole marched pixels
+    StereoSettings top_stereo, lower_stereo;
+    set_marched_size(top_stereo, at_top);
+    set_marched_size(lower_stereo, at_lower);
+    HeadlessRenderer a(test::shared_context(), bulb(), at_top, top_stereo);
+    HeadlessRenderer b(test::shared_context(), bulb(), at_lower, lower_stereo);
+    HeadlessRenderer fresh(test::shared_context(), bulb(), at_lower, lower_stereo);
+    HeadlessRenderer plain(test::shared_context(), bulb(), settings(false), StereoSettings{kSize, kSize});
+    const auto score = [&](HeadlessRenderer& r, int i) {
+        const HeadPose head = turning(i, 30.0);
+        return test::psnr(r.render(head, 0.0, static_cast<std::uint32_t>(i)).left, render_samples(plain, head, 0.0, 0, 16).left);
+    };
+    for (int i = 0; i < 15; ++i) a.render(turning(i, 30.0), 0.0, static_cast<std::uint32_t>(i));
+    const double before_down = score(a, 15);
+    ASSERT_TRUE(b.executor().take_history(a.executor()));
+    const double after_down = score(b, 16);
+    const double afresh = score(fresh, 16);
+    for (int i = 17; i < 31; ++i) b.render(turning(i, 30.0), 0.0, static_cast<std::uint32_t>(i));
+    const double before_up = score(b, 31);
+    ASSERT_TRUE(a.executor().take_history(b.executor()));
+    const double after_up = score(a, 32);
+    const std::string figures = fmt::format(
+        "bulb turning 30 deg/s, {}^2 shown, against 16 samples: down to scale 0.85 {:.2f} -> {:.2f} dB (started afresh "
+        "{:.2f}), back up {:.2f} -> {:.2f} dB",
+        kSize, before_down, after_down, afresh, before_up, after_up);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_GE(after_down, before_down - 1.0) << figures;
+    EXPECT_GE(after_up, before_up - 1.0) << figures;
+    EXPECT_LT(afresh, before_down - 1.0) << "the test tells a carried history from a fresh one: " << figures;
 }

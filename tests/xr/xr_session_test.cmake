@@ -26,9 +26,10 @@ elseif(CASE STREQUAL "gaze_flight_at_high_speed_stops_a_head_radius_from_the_sur
   list(APPEND args --frames 40 --fly 30 --check-collisions)
   set(expect_frames 40)
 elseif(CASE STREQUAL "the_governor_drops_to_the_floor_under_an_impossible_budget_and_climbs_back")
-  # The display period: 10 microseconds for 45 frames, then a whole second.
+  # The display period: 10 microseconds for 45 frames, then a whole second. With TAA, whose history
+  # every level continues (the level change test in tests/runtime/taa_test.cpp judges the picture).
   list(APPEND env FG_XR_TEST_PERIODS=0.01:45,1000)
-  list(APPEND args --frames 100)
+  list(APPEND args --frames 100 --taa)
   set(expect_frames 100)
 elseif(CASE STREQUAL "the_governor_steps_down_when_the_runtime_stretches_its_display_period")
   # As Monado: a slow application's predicted display period stretches to cover its frames, and
@@ -301,6 +302,10 @@ if(CASE MATCHES "^the_governor_drops")
   endif()
   if(NOT out MATCHES "governor: at the floor \\(level 4" OR NOT out MATCHES "governor: ended at level 0 of 4 \\(scale 1.00, foveation as the scene says\\)")
     message(FATAL_ERROR "the governor did not reach the floor under the impossible budget, or did not climb back")
+  endif()
+  if(NOT out MATCHES "governor: ([0-9]+) of ([0-9]+) level changes continued the TAA history" OR NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2
+     OR CMAKE_MATCH_1 LESS 8)
+    message(FATAL_ERROR "a level change started TAA afresh instead of continuing the history")
   endif()
   # Eight level changes, none a stall: each level's executor was built and run before the first
   # frame. Rebuilding one in a frame takes tens of frames' time on lavapipe.
