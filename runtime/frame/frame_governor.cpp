@@ -45,14 +45,32 @@ std::vector<GovernorLevel> governor_ladder(const PackManifest& m) {
 }
 
 FrameGovernor::FrameGovernor(std::vector<GovernorLevel> ladder, const GovernorSettings& settings)
-    : ladder_(std::move(ladder)), settings_(settings) {
+    : ladder_(std::move(ladder)), settings_(settings), resolution_(settings.resolution) {
     if (ladder_.empty()) ladder_.push_back({});
     climb_wait_.assign(ladder_.size(), settings_.up_after);
+}
+
+GovernorLevel FrameGovernor::effective(int level, int steps) const {
+    GovernorLevel l = ladder_.at(static_cast<std::size_t>(level));
+    l.render_scale *= resolution_.scale_at(steps);
+    return l;
 }
 
 bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
     message_.clear();
     ++frames_at_level_;
+    if (settings_.dynamic_resolution) {
+        if (resolution_.observe(gpu_ms, budget_ms)) {
+            message_ = "dynamic resolution, " + resolution_.message();
+            return true;
+        }
+        // While the scale can still move, the ladder waits and judges nothing.
+        if (!resolution_.pinned()) return false;
+    }
+    return observe_level(gpu_ms, budget_ms);
+}
+
+bool FrameGovernor::observe_level(double gpu_ms, double budget_ms) {
     if (cooldown_ > 0) {
         --cooldown_;
         return false;
@@ -73,7 +91,7 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
         if (at_floor() && over_ >= settings_.down_after && !floor_reported_) {
             floor_reported_ = true;
             message_ = fmt::format("at the floor (level {}: {}), still {:.1f} ms of GPU time per frame for a {:.3g} ms budget",
-                                   level_, current().describe(), mean, budget_ms);
+                                   level_, effective().describe(), mean, budget_ms);
         }
         return false;
     }
@@ -92,8 +110,9 @@ bool FrameGovernor::observe(double gpu_ms, double budget_ms) {
     over_ = under_ = 0;
     recent_.clear();
     cooldown_ = settings_.cooldown;
+    resolution_.restart();
     message_ = fmt::format("level {} ({}): {:.1f} ms of GPU time per frame, {} the {:.3g} ms budget{}", level_,
-                           current().describe(), mean, why, budget_ms, backoff);
+                           effective().describe(), mean, why, budget_ms, backoff);
     return true;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "frame/frame_settings.h"
+#include "frame/resolution_controller.h"
 #include "pack/manifest.h"
 
 namespace fg {
@@ -55,17 +56,32 @@ struct GovernorSettings {
     // settle on the cheaper one instead of switching every few frames.
     int failed_climb_frames = 60;
     int most_up_after = 768;
+    // Dynamic resolution inside each level (resolution_controller.h): the level's render scale
+    // times a scale steered in small steps; the ladder moves only when that scale is pinned at an
+    // end of its range. Off, the ladder alone governs.
+    bool dynamic_resolution = false;
+    ResolutionSettings resolution;
 };
 
 class FrameGovernor {
 public:
     FrameGovernor(std::vector<GovernorLevel> ladder, const GovernorSettings& settings = {});
 
-    // One frame's GPU time and budget; true when the level changed.
+    // One frame's GPU time and budget; true when the level or the dynamic scale changed.
     bool observe(double gpu_ms, double budget_ms);
 
     int level() const { return level_; }
     const GovernorLevel& current() const { return ladder_[static_cast<std::size_t>(level_)]; }
+    // The current level with its render scale times the dynamic one: what to render now.
+    GovernorLevel effective() const { return effective(level_, resolution_.steps()); }
+    // Any level at any dynamic scale (steps of ResolutionController::steps()).
+    GovernorLevel effective(int level, int steps) const;
+    // The dynamic scales a level can take, in steps below 1: 0 without dynamic resolution.
+    int most_scale_steps() const { return settings_.dynamic_resolution ? resolution_.most_steps() : 0; }
+    // One number for each level and dynamic scale (the frame graph each needs).
+    int setting_key(int level, int steps) const { return level * (resolution_.most_steps() + 1) + steps; }
+    int setting_key() const { return setting_key(level_, resolution_.steps()); }
+    const ResolutionController& resolution() const { return resolution_; }
     bool at_floor() const { return level_ + 1 == static_cast<int>(ladder_.size()); }
     int levels() const { return static_cast<int>(ladder_.size()); }
     const std::vector<GovernorLevel>& ladder() const { return ladder_; }
@@ -73,8 +89,11 @@ public:
     const std::string& message() const { return message_; }
 
 private:
+    bool observe_level(double gpu_ms, double budget_ms);
+
     std::vector<GovernorLevel> ladder_;
     GovernorSettings settings_;
+    ResolutionController resolution_;
     int level_ = 0, over_ = 0, under_ = 0, cooldown_ = 0;
     int frames_at_level_ = 0;
     bool climbed_ = false;                // the current level was reached by a climb

@@ -75,14 +75,6 @@ void main()
 }
 )";
 
-struct DepthPush {
-    float tan_fov[4];
-    float range[4];
-    float range2[4];
-    std::uint32_t size[4];
-    std::uint32_t bits16;
-};
-
 VkImageMemoryBarrier2 depth_barrier(VkImage image, VkImageLayout from, VkImageLayout to, vk::Access src, vk::Access dst) {
     VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     b.srcStageMask = src.stage;
@@ -105,6 +97,14 @@ void barrier(VkCommandBuffer cmd, const VkImageMemoryBarrier2& b) {
 }
 
 }  // namespace
+
+struct DepthPush {
+    float tan_fov[4];
+    float range[4];
+    float range2[4];
+    std::uint32_t size[4];
+    std::uint32_t bits16;
+};
 
 std::optional<std::int64_t> choose_depth_format(const std::vector<std::int64_t>& offered) {
     for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM})
@@ -150,19 +150,8 @@ void DepthSwapchain::describe(XrCompositionLayerDepthInfoKHR& info, const DepthP
     info.farZ = p.far_m;
 }
 
-void DepthSwapchain::present(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
-                             const DepthProjection& p) {
-    std::uint32_t index = 0;
-    XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    check(xrAcquireSwapchainImage(swapchain_, &acquire, &index), "xrAcquireSwapchainImage (depth)");
-    XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-    wait.timeout = XR_INFINITE_DURATION;
-    check(xrWaitSwapchainImage(swapchain_, &wait), "xrWaitSwapchainImage (depth)");
-    if (index >= images_.size())
-        throw XrError(XR_ERROR_RUNTIME_FAILURE, fmt::format("the runtime acquired depth swapchain image {} of {}", index, images_.size()));
-    // Every frame: the frame graph's images change with the governor's sizes (the last frame's
-    // copy has finished, so the set is free to update).
-    vk::write_storage_image(ctx, set_, 0, depth);
+DepthPush DepthSwapchain::conversion(vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
+                                     const DepthProjection& p) const {
     const bool bits16 = format_ == VK_FORMAT_D16_UNORM;
     DepthPush push{};
     const float tans[4] = {static_cast<float>(fov.left), static_cast<float>(fov.right), static_cast<float>(fov.down),
@@ -181,13 +170,44 @@ void DepthSwapchain::present(const vk::Context& ctx, vk::StorageImage& depth, co
     push.size[2] = depth.extent().width;
     push.size[3] = depth.extent().height;
     push.bits16 = bits16 ? 1u : 0u;
+    return push;
+}
+
+std::uint32_t DepthSwapchain::words() const {
     const std::uint32_t pixels = width_ * height_;
-    const std::uint32_t words = bits16 ? (pixels + 1) / 2 : pixels;
+    return format_ == VK_FORMAT_D16_UNORM ? (pixels + 1) / 2 : pixels;
+}
+
+void DepthSwapchain::prepare(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
+                             const DepthProjection& p) {
+    vk::write_storage_image(ctx, set_, 0, depth);
+    const DepthPush push = conversion(depth, fov, scene_units_per_metre, p);
+    vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
+        depth.transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::compute_write, vk::access::compute_read);
+        pipeline_->dispatch(cmd, set_, {vk::groups_for(words(), 64)}, vk::bytes_of(push));
+        depth.transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::compute_read, vk::access::compute_read_write);
+    });
+}
+
+void DepthSwapchain::present(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
+                             const DepthProjection& p) {
+    std::uint32_t index = 0;
+    XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+    check(xrAcquireSwapchainImage(swapchain_, &acquire, &index), "xrAcquireSwapchainImage (depth)");
+    XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+    wait.timeout = XR_INFINITE_DURATION;
+    check(xrWaitSwapchainImage(swapchain_, &wait), "xrWaitSwapchainImage (depth)");
+    if (index >= images_.size())
+        throw XrError(XR_ERROR_RUNTIME_FAILURE, fmt::format("the runtime acquired depth swapchain image {} of {}", index, images_.size()));
+    // Every frame: the frame graph's images change with the governor's sizes (the last frame's
+    // copy has finished, so the set is free to update).
+    vk::write_storage_image(ctx, set_, 0, depth);
+    const DepthPush push = conversion(depth, fov, scene_units_per_metre, p);
 
     VkImage target = images_[index];
     vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
         depth.transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::compute_write, vk::access::compute_read);
-        pipeline_->dispatch(cmd, set_, {vk::groups_for(words, 64)}, vk::bytes_of(push));
+        pipeline_->dispatch(cmd, set_, {vk::groups_for(words(), 64)}, vk::bytes_of(push));
         vk::compute_to_transfer_barrier(cmd);
         // The runtime hands depth images over in DEPTH_STENCIL_ATTACHMENT_OPTIMAL and wants them back in it.
         const vk::Access attachment{VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,

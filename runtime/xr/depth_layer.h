@@ -32,6 +32,8 @@ struct DepthProjection {
     float min_depth = 0.0f, max_depth = 1.0f;
 };
 
+struct DepthPush;   // the conversion pass's push constants
+
 // One eye's depth swapchain, the same size as its colour swapchain.
 class DepthSwapchain {
 public:
@@ -46,6 +48,12 @@ public:
     void present(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
                  const DepthProjection& projection);
 
+    // The conversion alone, into the staging buffer: what a later present of a depth image of this
+    // size needs is made now (lavapipe compiles again for an image of a kind it has not seen, a
+    // power-of-two size), not in a frame.
+    void prepare(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
+                 const DepthProjection& projection);
+
     // Fills the chained struct for a projection view (its `next` is left to the caller).
     void describe(XrCompositionLayerDepthInfoKHR& info, const DepthProjection& projection) const;
 
@@ -53,6 +61,9 @@ public:
     std::int64_t format() const { return format_; }
 
 private:
+    DepthPush conversion(vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre, const DepthProjection& p) const;
+    std::uint32_t words() const;   // of the staging buffer
+
     XrSwapchain swapchain_ = XR_NULL_HANDLE;
     std::vector<VkImage> images_;
     std::int64_t format_ = 0;

@@ -21,6 +21,8 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
     c.command->add_option("--trade-offs", c.options.trade_offs,
                           "results.json of `fgplay bench` for this graph: the governor walks its measured Pareto front")
         ->check(CLI::ExistingFile);
+    c.command->add_flag_function("--no-dynamic-resolution", [&c](std::int64_t) { c.options.dynamic_resolution = false; },
+                                 "the governor moves only along its ladder, not the render scale in small steps first");
     c.command->add_option("--budget-ms", c.options.budget_ms, "GPU time per frame to hold (default: the display period)");
     c.command->add_option("--fly", c.options.fly, "fly where you look at this throttle (1 = normal speed)");
     c.command->add_option("--controller-speed", c.options.controller_speed,

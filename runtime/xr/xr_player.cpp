@@ -101,7 +101,9 @@ public:
         base_height_ = o.height ? o.height : std::max(views[0].recommendedImageRectHeight, views[1].recommendedImageRectHeight);
         frame_.width = base_width_;
         frame_.height = base_height_;
-        governor_ = std::make_unique<FrameGovernor>(o.ladder.empty() ? governor_ladder(pack.manifest) : o.ladder);
+        GovernorSettings governing;
+        governing.dynamic_resolution = o.dynamic_resolution;
+        governor_ = std::make_unique<FrameGovernor>(o.ladder.empty() ? governor_ladder(pack.manifest) : o.ladder, governing);
         frame_.stereo = o.stereo;
         frame_.headset_lens = instance_.has_visibility_mask();   // update_lens_masks puts it into the frames
         frame_.cone_levels = o.cone_levels;
@@ -192,7 +194,11 @@ private:
     struct LevelExecutor {
         std::unique_ptr<FrameExecutor> executor;
         std::uint32_t width = 0, height = 0;   // the centre view it was built for
+        std::uint64_t last_used = 0;           // select_executor's count when it last took it
     };
+    // Executors of dynamic scales kept besides each level's own: each holds a frame graph's images
+    // (with TAA a full-size history), and rebuilding one compiles nothing (prepare_levels).
+    static constexpr int kKeptScales = 4;
 
     SessionAction poll_events() {
         while (true) {
@@ -377,7 +383,7 @@ private:
             std::fflush(stdout);
         }
         if (!changed) return;
-        apply(governor_->current());
+        apply(governor_->effective());
         set_marched_size(stereo_, frame_);
     }
 
@@ -385,7 +391,8 @@ private:
     // level change swaps executors and waits for nothing; only a new field of view (a new size)
     // builds one again.
     void select_executor(const StereoViews& sv) {
-        LevelExecutor& slot = level_executor(options_.governor ? governor_->level() : 0, sv);
+        LevelExecutor& slot = level_executor(options_.governor ? governor_->setting_key() : 0, sv);
+        slot.last_used = ++selections_;
         if (executor_ == slot.executor.get()) return;
         // Its own history is from when its level last ran, another view; with TAA it continues the
         // level before's, which resolves to the same size (settings_at_level).
@@ -396,20 +403,50 @@ private:
         }
         executor_ = slot.executor.get();
         masks_dirty_ = true;
+        drop_unused_scales();
     }
 
-    // The executor of `level` for the current frame settings, built where it has none for these
-    // views' size.
-    LevelExecutor& level_executor(int level, const StereoViews& sv) {
-        LevelExecutor& slot = executors_[level];
+    // Beyond kKeptScales executors of dynamic scales, the least recently used goes.
+    void drop_unused_scales() {
+        const int per_level = governor_->most_scale_steps() + 1;
+        auto dynamic = [&](int key) { return per_level > 1 && key % per_level != 0; };
+        while (std::count_if(executors_.begin(), executors_.end(), [&](const auto& e) { return dynamic(e.first); }) > kKeptScales) {
+            auto oldest = executors_.end();
+            for (auto it = executors_.begin(); it != executors_.end(); ++it)
+                if (dynamic(it->first) && it->second.executor.get() != executor_ &&
+                    (oldest == executors_.end() || it->second.last_used < oldest->second.last_used))
+                    oldest = it;
+            ctx_.wait_idle();   // a present may still read its images
+            executors_.erase(oldest);
+        }
+    }
+
+    // The executor of a setting (FrameGovernor::setting_key) for the current frame settings, built
+    // where it has none for these views' size. A dynamic scale's is built again on its next use: it
+    // was built and run once before the first frame, so it compiles nothing.
+    LevelExecutor& level_executor(int key, const StereoViews& sv) {
+        LevelExecutor& slot = executors_[key];
         if (slot.executor && slot.width == sv.centre.width && slot.height == sv.centre.height) return slot;
         if (slot.executor) ctx_.wait_idle();   // a present may still read its images
         if (executor_ == slot.executor.get()) executor_ = nullptr;
+        const bool first = !slot.executor;
         slot.executor = std::make_unique<FrameExecutor>(
             ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
         slot.width = sv.centre.width;
         slot.height = sv.centre.height;
+        if (first && levels_prepared_) rehearse_presents(*slot.executor);
         return slot;
+    }
+
+    // The copies of an executor's pictures into the swapchains, made once into images of their own:
+    // lavapipe compiles a blit, and a pass again for an image of a size it has not seen.
+    void rehearse_presents(FrameExecutor& executor) {
+        for (int eye = 0; eye < 2; ++eye) {
+            swapchains_[eye]->prepare(ctx_, executor.image(eye ? "final.right" : "final.left"));
+            if (depth_[eye])
+                depth_[eye]->prepare(ctx_, executor.image(eye ? "depth.right" : "depth.left"), Fov{}, 1.0,
+                                     depth_projection_);
+        }
     }
 
     // The headset's own visibility mask, where it gives one, as the frame graph's lens mask: pixels
@@ -422,18 +459,20 @@ private:
             }
     }
 
-    // Every level's executor built and run once before the first frame is shown: lavapipe compiles
-    // a pipeline at its first dispatch, and building one takes a device that waits. Levels that
-    // differ only in size share their pipelines (pipelines_).
+    // Every level's executor, at every dynamic scale, built and run once before the first frame is
+    // shown: lavapipe compiles a pipeline at its first dispatch, and again for images of a kind it
+    // has not seen (a power-of-two size: 0.9 s of one frame under validation), and building one
+    // takes a device that waits. Settings that differ only in size share their pipelines
+    // (pipelines_); the dynamic scales' executors are then dropped, and rebuilt in milliseconds.
     void prepare_levels(const HeadPose& head, const Fov& left, const Fov& right, const ViewerFrame& viewer) {
         levels_prepared_ = true;
         const auto start = std::chrono::steady_clock::now();
-        const GovernorLevel current = governor_->current();
-        for (int level = governor_->levels() - 1; level >= 0; --level) {
-            apply(governor_->ladder()[static_cast<std::size_t>(level)]);
+        for (int level = governor_->levels() - 1; level >= 0; --level)
+            for (int steps = governor_->most_scale_steps(); steps >= 0; --steps) {
+            apply(governor_->effective(level, steps));
             set_marched_size(stereo_, frame_);
             const StereoViews sv = make_stereo_views(head, left, right, stereo_);
-            LevelExecutor& slot = level_executor(level, sv);
+            LevelExecutor& slot = level_executor(governor_->setting_key(level, steps), sv);
             // With the lens mask, so that its tile lists' passes are compiled too.
             update_lens_masks(sv);
             GpuFrame gpu = make_gpu_frame(sv, slot.executor->graph().settings, 0.0, viewer.world_scale, 0);
@@ -442,12 +481,13 @@ private:
             slot.executor->set_scene(viewer.scene);
             slot.executor->run();
             slot.executor->forget_history();
-            for (int eye = 0; eye < 2; ++eye) swapchains_[eye]->prepare(ctx_, slot.executor->image(eye ? "final.right" : "final.left"));
-        }
-        apply(current);
+            rehearse_presents(*slot.executor);
+            if (steps > 0) executors_.erase(governor_->setting_key(level, steps));
+            }
+        apply(governor_->effective());
         set_marched_size(stereo_, frame_);
-        fmt::print("governor: {} levels built and run once in {:.1f} s: a level change waits for nothing\n",
-                   governor_->levels(),
+        fmt::print("governor: {} levels at {} render scales each built and run once in {:.1f} s: a change waits for nothing\n",
+                   governor_->levels(), governor_->most_scale_steps() + 1,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         std::fflush(stdout);
     }
@@ -558,6 +598,7 @@ private:
     FrameExecutor* executor_ = nullptr;        // the one in use
     bool levels_prepared_ = false;
     int level_changes_ = 0, histories_taken_ = 0;
+    std::uint64_t selections_ = 0;
     XrTime first_time_ = 0, last_time_ = 0;
     std::unique_ptr<ControllerActions> actions_;
     double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0;
@@ -642,9 +683,9 @@ int play_xr(const XrPlayOptions& o) {
                 if (player.witness()) fmt::print("{}\n", player.witness()->summary());
                 if (o.governor)
                     fmt::print("governor: ended at level {} of {} ({})\n", player.governor().level(),
-                               player.governor().levels() - 1, player.governor().current().describe());
+                               player.governor().levels() - 1, player.governor().effective().describe());
                 if (o.governor && o.taa)
-                    fmt::print("governor: {} of {} level changes continued the TAA history\n", player.histories_taken(),
+                    fmt::print("governor: {} of {} changes of level or scale continued the TAA history\n", player.histories_taken(),
                                player.level_changes());
                 if (instance.has_visibility_mask()) {
                     auto skipped = [&](int eye) {

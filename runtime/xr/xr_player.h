@@ -23,6 +23,7 @@ struct XrPlayOptions {
     std::string device;
     std::map<std::string, double> knobs;
     bool governor = true;                // hold the frame budget by moving along the accuracy ladder
+    bool dynamic_resolution = true;      // with it, the render scale moves in small steps first
     double budget_ms = 0.0;              // 0 = the display period the runtime predicts
     std::string trade_offs;              // results.json of `fgplay bench`: the governor walks its Pareto front
     std::vector<GovernorLevel> ladder;   // read from trade_offs by play_xr; empty: the fixed ladder

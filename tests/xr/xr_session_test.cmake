@@ -303,7 +303,7 @@ if(CASE MATCHES "^the_governor_drops")
   if(NOT out MATCHES "governor: at the floor \\(level 4" OR NOT out MATCHES "governor: ended at level 0 of 4 \\(scale 1.00, foveation as the scene says\\)")
     message(FATAL_ERROR "the governor did not reach the floor under the impossible budget, or did not climb back")
   endif()
-  if(NOT out MATCHES "governor: ([0-9]+) of ([0-9]+) level changes continued the TAA history" OR NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2
+  if(NOT out MATCHES "governor: ([0-9]+) of ([0-9]+) changes of level or scale continued the TAA history" OR NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2
      OR CMAKE_MATCH_1 LESS 8)
     message(FATAL_ERROR "a level change started TAA afresh instead of continuing the history")
   endif()

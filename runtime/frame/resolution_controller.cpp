@@ -1,0 +1,53 @@
+#include "frame/resolution_controller.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace fg {
+
+ResolutionController::ResolutionController(const ResolutionSettings& settings)
+    : settings_(settings), most_steps_(static_cast<int>(std::floor((1.0 - settings.lowest) / settings.step + 1e-9))) {}
+
+void ResolutionController::restart() {
+    recent_.clear();
+    settle_ = settings_.settle;
+}
+
+bool ResolutionController::observe(double gpu_ms, double budget_ms) {
+    message_.clear();
+    if (settle_ > 0) {
+        --settle_;
+        return false;
+    }
+    recent_.push_back(gpu_ms);
+    if (static_cast<int>(recent_.size()) > settings_.window) recent_.pop_front();
+    if (static_cast<int>(recent_.size()) < settings_.window || budget_ms <= 0.0) return false;
+    std::vector<double> sorted(recent_.begin(), recent_.end());
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double ms = sorted[sorted.size() / 2];
+    const double aim = settings_.aim * budget_ms, high = (settings_.aim + settings_.band) * budget_ms,
+                 low = (settings_.aim - settings_.band) * budget_ms;
+    pinned_ = (ms > high && steps_ == most_steps_) || (ms < low && steps_ == 0);
+    if (pinned_ || (ms >= low && ms <= high)) return false;
+    // The scale whose time would be the aim, in whole steps: down to at least one step below, up by
+    // one step, or to it where the time is under half the aim.
+    const double fits = scale() * std::sqrt(aim / ms);
+    const int fits_steps = std::clamp(static_cast<int>(std::ceil((1.0 - fits) / settings_.step - 1e-9)), 0, most_steps_);
+    int next = steps_;
+    if (ms > high) next = std::max(fits_steps, steps_ + 1);
+    else next = ms < 0.5 * aim ? std::min(fits_steps, steps_ - 1) : steps_ - 1;
+    next = std::clamp(next, 0, most_steps_);
+    if (next == steps_) return false;
+    message_ = fmt::format("scale {:.2f} -> {:.2f}: {:.1f} ms of GPU time per frame, {} {:.0f}-{:.0f} % of the {:.3g} ms budget",
+                           scale(), scale_at(next), ms, ms > high ? "over" : "under",
+                           100.0 * (settings_.aim - settings_.band), 100.0 * (settings_.aim + settings_.band), budget_ms);
+    steps_ = next;
+    recent_.clear();
+    settle_ = settings_.settle;
+    return true;
+}
+
+}  // namespace fg
