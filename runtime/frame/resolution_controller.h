@@ -6,7 +6,8 @@
 // scale climbs one step at a time, or at once when the time is far below the band. Inside the band
 // nothing changes, so a steady scene settles. GPU time is taken to grow with the marched pixels,
 // the square of the scale; what does not (a pass at the output size) only makes a step smaller
-// than predicted, and the next judgement takes another.
+// than predicted, and the next judgement takes another. A climb that falls straight back holds the
+// scale below it for a while, longer each time: the cost need not be smooth in the scale.
 #include <deque>
 #include <string>
 
@@ -17,8 +18,14 @@ struct ResolutionSettings {
     double step = 0.05;     // scales are whole steps: each has its own frame graph, built once
     double aim = 0.8;       // the time steered to, of the budget
     double band = 0.1;      // no change while the time is within aim +- band (of the budget)
-    int window = 3;         // frames whose median is judged
+    int window = 5;         // frames whose median is judged
+    int climb_after = 3;    // judgements in a row under the band before a climb
     int settle = 2;         // frames after a change left unjudged (the new size's first times)
+    // A climb that falls back within this many frames keeps the scale below the one it reached for
+    // `first_hold` frames, twice as long at each repeat, up to `longest_hold`.
+    int failed_climb_frames = 60;
+    int first_hold = 60;
+    int longest_hold = 3840;
 };
 
 class ResolutionController {
@@ -44,6 +51,10 @@ public:
 private:
     ResolutionSettings settings_;
     int steps_ = 0, most_steps_ = 0, settle_ = 0;
+    int frames_ = 0, over_ = 0, under_ = 0;
+    int climbed_to_ = -1, climbed_at_ = 0;   // the last climb: its steps and frame
+    int ceiling_ = 0, ceiling_until_ = 0;    // a climb stops at `ceiling_` steps until that frame
+    int hold_ = 0;                           // frames the next failed climb holds the ceiling
     bool pinned_ = false;
     std::deque<double> recent_;
     std::string message_;

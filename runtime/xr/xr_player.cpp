@@ -378,8 +378,9 @@ private:
         const auto budget = budget_ms();
         if (it == fs.gpu_ms.end() || !budget) return;
         bool changed = governor_->observe(it->second, *budget);
+        ++governed_frames_;
         if (!governor_->message().empty()) {
-            fmt::print("governor: {}\n", governor_->message());
+            fmt::print("governor: {} (frame {})\n", governor_->message(), governed_frames_);
             std::fflush(stdout);
         }
         if (!changed) return;
@@ -599,6 +600,7 @@ private:
     bool levels_prepared_ = false;
     int level_changes_ = 0, histories_taken_ = 0;
     std::uint64_t selections_ = 0;
+    int governed_frames_ = 0;   // frames whose time the governor judged, for its log
     XrTime first_time_ = 0, last_time_ = 0;
     std::unique_ptr<ControllerActions> actions_;
     double scale_first_ = 1.0, ipd_first_ = -1.0, ipd_last_ = 0.0;

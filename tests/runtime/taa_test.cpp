@@ -383,4 +383,24 @@ TEST_F(Taa, a_governor_level_change_keeps_the_converged_picture) {
     EXPECT_GE(after_down, before_down - 1.0) << figures;
     EXPECT_GE(after_up, before_up - 1.0) << figures;
     EXPECT_LT(afresh, before_down - 1.0) << "the test tells a carried history from a fresh one: " << figures;
+
+    // A still head: the lower level continues the plain mean of the samples (still_frames goes on).
+    // Its picture is then the lower level's own, which differs from the full-size reference by
+    // the conemarch's fringe on the coarser grid: the change costs nothing beyond that.
+    const HeadPose head = turning(0, 0.0);
+    const Rgba8Image reference = render_samples(plain, head, 0.0, 0, 16).left;
+    const auto still_psnr = [&](HeadlessRenderer& r, std::uint32_t frames) {
+        r.executor().forget_history();
+        for (std::uint32_t i = 0; i + 1 < frames; ++i) r.render(head, 0.0, i);
+        return test::psnr(r.render(head, 0.0, frames - 1).left, reference);
+    };
+    const double lower_own = still_psnr(b, 32);
+    const double still_before = still_psnr(a, 32);
+    ASSERT_TRUE(b.executor().take_history(a.executor()));
+    const double still_after = test::psnr(b.render(head, 0.0, 32).left, reference);
+    const std::string still = fmt::format("still bulb: scale 1 -> 0.85 {:.2f} -> {:.2f} dB; 32 frames at 0.85 alone {:.2f} dB",
+                                          still_before, still_after, lower_own);
+    std::printf("%s\n", still.c_str());
+    EXPECT_GT(b.executor().frame().still_frames, 16u) << "the head stayed still across the change";
+    EXPECT_GE(still_after, lower_own - 0.5) << still;
 }
