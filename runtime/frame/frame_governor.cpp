@@ -45,7 +45,7 @@ std::vector<GovernorLevel> governor_ladder(const PackManifest& m) {
 }
 
 FrameGovernor::FrameGovernor(std::vector<GovernorLevel> ladder, const GovernorSettings& settings)
-    : ladder_(std::move(ladder)), settings_(settings), resolution_(settings.resolution) {
+    : ladder_(std::move(ladder)), settings_(settings), resolution_(settings.resolution), recent_(settings.window) {
     if (ladder_.empty()) ladder_.push_back({});
     climb_wait_.assign(ladder_.size(), settings_.up_after);
 }
@@ -75,13 +75,9 @@ bool FrameGovernor::observe_level(double gpu_ms, double budget_ms) {
         --cooldown_;
         return false;
     }
-    recent_.push_back(gpu_ms);
-    if (static_cast<int>(recent_.size()) > settings_.window) recent_.pop_front();
-    if (static_cast<int>(recent_.size()) < settings_.window || budget_ms <= 0.0) return false;
-    // The median: one slow frame (a pipeline compile, the OS) is not a trend.
-    std::vector<double> sorted(recent_.begin(), recent_.end());
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double mean = sorted[sorted.size() / 2];
+    recent_.push(gpu_ms);
+    if (!recent_.full() || budget_ms <= 0.0) return false;
+    const double mean = recent_.median();
     over_ = mean > budget_ms ? over_ + 1 : 0;
     under_ = mean < settings_.up_fraction * budget_ms ? under_ + 1 : 0;
     int next = level_;

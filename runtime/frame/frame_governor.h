@@ -8,7 +8,6 @@
 // twice as long to climb again to a level it just fell back from, so the image does not flicker
 // between two settings.
 #include <cstdint>
-#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -99,7 +98,7 @@ private:
     bool climbed_ = false;                // the current level was reached by a climb
     std::vector<int> climb_wait_;         // per level: judgements under the budget a climb to it waits for
     bool floor_reported_ = false;
-    std::deque<double> recent_;
+    MedianWindow recent_;
     std::string message_;
 };
 

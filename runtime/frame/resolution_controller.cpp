@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include <fmt/format.h>
 
@@ -10,7 +9,7 @@ namespace fg {
 
 ResolutionController::ResolutionController(const ResolutionSettings& settings)
     : settings_(settings), most_steps_(static_cast<int>(std::floor((1.0 - settings.lowest) / settings.step + 1e-9))),
-      hold_(settings.first_hold) {}
+      hold_(settings.first_hold), recent_(settings.window) {}
 
 void ResolutionController::restart() {
     recent_.clear();
@@ -24,12 +23,9 @@ bool ResolutionController::observe(double gpu_ms, double budget_ms) {
         --settle_;
         return false;
     }
-    recent_.push_back(gpu_ms);
-    if (static_cast<int>(recent_.size()) > settings_.window) recent_.pop_front();
-    if (static_cast<int>(recent_.size()) < settings_.window || budget_ms <= 0.0) return false;
-    std::vector<double> sorted(recent_.begin(), recent_.end());
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double ms = sorted[sorted.size() / 2];
+    recent_.push(gpu_ms);
+    if (!recent_.full() || budget_ms <= 0.0) return false;
+    const double ms = recent_.median();
     const double aim = settings_.aim * budget_ms, high = (settings_.aim + settings_.band) * budget_ms,
                  low = (settings_.aim - settings_.band) * budget_ms;
     pinned_ = (ms > high && steps_ == most_steps_) || (ms < low && steps_ == 0);

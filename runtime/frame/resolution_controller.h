@@ -8,8 +8,9 @@
 // the square of the scale; what does not (a pass at the output size) only makes a step smaller
 // than predicted, and the next judgement takes another. A climb that falls straight back holds the
 // scale below it for a while, longer each time: the cost need not be smooth in the scale.
-#include <deque>
 #include <string>
+
+#include "frame/median_window.h"
 
 namespace fg {
 
@@ -56,7 +57,7 @@ private:
     int ceiling_ = 0, ceiling_until_ = 0;    // a climb stops at `ceiling_` steps until that frame
     int hold_ = 0;                           // frames the next failed climb holds the ceiling
     bool pinned_ = false;
-    std::deque<double> recent_;
+    MedianWindow recent_;
     std::string message_;
 };
 
