@@ -49,8 +49,8 @@ public:
                  const DepthProjection& projection);
 
     // The conversion alone, into the staging buffer: what a later present of a depth image of this
-    // size needs is made now (lavapipe compiles again for an image of a kind it has not seen, a
-    // power-of-two size), not in a frame.
+    // size needs is made now (lavapipe compiles the pass again for an image size it has not run),
+    // not in a frame.
     void prepare(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
                  const DepthProjection& projection);
 

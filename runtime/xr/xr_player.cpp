@@ -461,8 +461,8 @@ private:
     }
 
     // Every level's executor, at every dynamic scale, built and run once before the first frame is
-    // shown: lavapipe compiles a pipeline at its first dispatch, and again for images of a kind it
-    // has not seen (a power-of-two size: 0.9 s of one frame under validation), and building one
+    // shown: lavapipe compiles a pipeline at its first dispatch, and again for images of a size it
+    // has not run (the first 32^2 frame: 0.9 s under validation), and building one
     // takes a device that waits. Settings that differ only in size share their pipelines
     // (pipelines_); the dynamic scales' executors are then dropped, and rebuilt in milliseconds.
     void prepare_levels(const HeadPose& head, const Fov& left, const Fov& right, const ViewerFrame& viewer) {
