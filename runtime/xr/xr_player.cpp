@@ -164,7 +164,7 @@ public:
     const LensEllipse& lens(int eye) const { return lenses_[eye]; }
     const CollisionWitness* witness() const { return witness_.get(); }
     const FrameGovernor& governor() const { return *governor_; }
-    // Level changes, and those whose new level continued the TAA history of the one before.
+    // Changes of level or dynamic scale, and those that continued the TAA history of the one before.
     int level_changes() const { return level_changes_; }
     int histories_taken() const { return histories_taken_; }
     bool has_depth_layer() const { return depth_[0] != nullptr; }
@@ -468,23 +468,24 @@ private:
     void prepare_levels(const HeadPose& head, const Fov& left, const Fov& right, const ViewerFrame& viewer) {
         levels_prepared_ = true;
         const auto start = std::chrono::steady_clock::now();
-        for (int level = governor_->levels() - 1; level >= 0; --level)
+        for (int level = governor_->levels() - 1; level >= 0; --level) {
             for (int steps = governor_->most_scale_steps(); steps >= 0; --steps) {
-            apply(governor_->effective(level, steps));
-            set_marched_size(stereo_, frame_);
-            const StereoViews sv = make_stereo_views(head, left, right, stereo_);
-            LevelExecutor& slot = level_executor(governor_->setting_key(level, steps), sv);
-            // With the lens mask, so that its tile lists' passes are compiled too.
-            update_lens_masks(sv);
-            GpuFrame gpu = make_gpu_frame(sv, slot.executor->graph().settings, 0.0, viewer.world_scale, 0);
-            put_lenses(gpu);
-            slot.executor->set_frame(gpu);
-            slot.executor->set_scene(viewer.scene);
-            slot.executor->run();
-            slot.executor->forget_history();
-            rehearse_presents(*slot.executor);
-            if (steps > 0) executors_.erase(governor_->setting_key(level, steps));
+                apply(governor_->effective(level, steps));
+                set_marched_size(stereo_, frame_);
+                const StereoViews sv = make_stereo_views(head, left, right, stereo_);
+                LevelExecutor& slot = level_executor(governor_->setting_key(level, steps), sv);
+                // With the lens mask, so that its tile lists' passes are compiled too.
+                update_lens_masks(sv);
+                GpuFrame gpu = make_gpu_frame(sv, slot.executor->graph().settings, 0.0, viewer.world_scale, 0);
+                put_lenses(gpu);
+                slot.executor->set_frame(gpu);
+                slot.executor->set_scene(viewer.scene);
+                slot.executor->run();
+                slot.executor->forget_history();
+                rehearse_presents(*slot.executor);
+                if (steps > 0) executors_.erase(governor_->setting_key(level, steps));
             }
+        }
         apply(governor_->effective());
         set_marched_size(stereo_, frame_);
         fmt::print("governor: {} levels at {} render scales each built and run once in {:.1f} s: a change waits for nothing\n",
