@@ -78,7 +78,7 @@ public:
     // The dynamic scales a level can take, in steps below 1: 0 without dynamic resolution.
     int most_scale_steps() const { return settings_.dynamic_resolution ? resolution_.most_steps() : 0; }
     // One number for each level and dynamic scale (the frame graph each needs).
-    int setting_key(int level, int steps) const { return level * (resolution_.most_steps() + 1) + steps; }
+    int setting_key(int level, int steps) const { return level * (most_scale_steps() + 1) + steps; }
     int setting_key() const { return setting_key(level_, resolution_.steps()); }
     const ResolutionController& resolution() const { return resolution_; }
     bool at_floor() const { return level_ + 1 == static_cast<int>(ladder_.size()); }

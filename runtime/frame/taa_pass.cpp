@@ -24,11 +24,21 @@ void set_taa_upscale(FrameSettings& f, double factor) {
     f.detail_scale /= factor;
 }
 
+namespace {
+
+// A view's history images: the resolved colour and the depth of its nearest samples.
+std::string resolved_image(int view) { return std::string("taa.") + view_name(view); }
+std::string resolved_depth_image(int view) { return std::string("taa_depth.") + view_name(view); }
+
+}  // namespace
+
 std::vector<std::string> taa_history_images(const FrameGraph& g) {
     std::vector<std::string> names;
     if (!g.taa) return names;
-    for (int view : g.output_views())
-        for (const char* kind : {"taa.", "taa_depth."}) names.push_back(kind + std::string(view_name(view)));
+    for (int view : g.output_views()) {
+        names.push_back(resolved_image(view));
+        names.push_back(resolved_depth_image(view));
+    }
     return names;
 }
 
@@ -37,7 +47,7 @@ void add_taa_passes(FrameGraph& g) {
     const std::uint32_t w = g.output_width, h = g.output_height;
     for (int view : g.output_views()) {
         std::string eye = view_name(view);
-        const std::string resolved = "taa." + eye, depth = "taa_depth." + eye;
+        const std::string resolved = resolved_image(view), depth = resolved_depth_image(view);
         // Single precision: a still pixel's mean moves by 1/n of a sample a frame, less than a half
         // float's step after some frames, and half-float rounding then darkened a still picture by
         // 4.7 % over 300 frames.

@@ -150,8 +150,11 @@ void DepthSwapchain::describe(XrCompositionLayerDepthInfoKHR& info, const DepthP
     info.farZ = p.far_m;
 }
 
-DepthPush DepthSwapchain::conversion(vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
-                                     const DepthProjection& p) const {
+DepthPush DepthSwapchain::conversion(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov,
+                                     double scene_units_per_metre, const DepthProjection& p) {
+    // Every frame: the frame graph's images change with the governor's sizes (the last frame's
+    // copy has finished, so the set is free to update).
+    vk::write_storage_image(ctx, set_, 0, depth);
     const bool bits16 = format_ == VK_FORMAT_D16_UNORM;
     DepthPush push{};
     const float tans[4] = {static_cast<float>(fov.left), static_cast<float>(fov.right), static_cast<float>(fov.down),
@@ -180,8 +183,7 @@ std::uint32_t DepthSwapchain::words() const {
 
 void DepthSwapchain::prepare(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
                              const DepthProjection& p) {
-    vk::write_storage_image(ctx, set_, 0, depth);
-    const DepthPush push = conversion(depth, fov, scene_units_per_metre, p);
+    const DepthPush push = conversion(ctx, depth, fov, scene_units_per_metre, p);
     vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {
         depth.transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::compute_write, vk::access::compute_read);
         pipeline_->dispatch(cmd, set_, {vk::groups_for(words(), 64)}, vk::bytes_of(push));
@@ -199,10 +201,7 @@ void DepthSwapchain::present(const vk::Context& ctx, vk::StorageImage& depth, co
     check(xrWaitSwapchainImage(swapchain_, &wait), "xrWaitSwapchainImage (depth)");
     if (index >= images_.size())
         throw XrError(XR_ERROR_RUNTIME_FAILURE, fmt::format("the runtime acquired depth swapchain image {} of {}", index, images_.size()));
-    // Every frame: the frame graph's images change with the governor's sizes (the last frame's
-    // copy has finished, so the set is free to update).
-    vk::write_storage_image(ctx, set_, 0, depth);
-    const DepthPush push = conversion(depth, fov, scene_units_per_metre, p);
+    const DepthPush push = conversion(ctx, depth, fov, scene_units_per_metre, p);
 
     VkImage target = images_[index];
     vk::OneShot::run(ctx, [&](VkCommandBuffer cmd) {

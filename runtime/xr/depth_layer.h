@@ -61,7 +61,9 @@ public:
     std::int64_t format() const { return format_; }
 
 private:
-    DepthPush conversion(vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre, const DepthProjection& p) const;
+    // Binds `depth` to the conversion pass and returns its push constants.
+    DepthPush conversion(const vk::Context& ctx, vk::StorageImage& depth, const Fov& fov, double scene_units_per_metre,
+                         const DepthProjection& p);
     std::uint32_t words() const;   // of the staging buffer
 
     XrSwapchain swapchain_ = XR_NULL_HANDLE;

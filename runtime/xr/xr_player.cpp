@@ -424,18 +424,16 @@ private:
 
     // The executor of a setting (FrameGovernor::setting_key) for the current frame settings, built
     // where it has none for these views' size. A dynamic scale's is built again on its next use: it
-    // was built and run once before the first frame, so it compiles nothing.
+    // was built, run and presented once before the first frame, so it compiles nothing.
     LevelExecutor& level_executor(int key, const StereoViews& sv) {
         LevelExecutor& slot = executors_[key];
         if (slot.executor && slot.width == sv.centre.width && slot.height == sv.centre.height) return slot;
         if (slot.executor) ctx_.wait_idle();   // a present may still read its images
         if (executor_ == slot.executor.get()) executor_ = nullptr;
-        const bool first = !slot.executor;
         slot.executor = std::make_unique<FrameExecutor>(
             ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
         slot.width = sv.centre.width;
         slot.height = sv.centre.height;
-        if (first && levels_prepared_) rehearse_presents(*slot.executor);
         return slot;
     }
 
