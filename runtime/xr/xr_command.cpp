@@ -43,6 +43,9 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
     c.command->add_option("--record", c.options.record,
                           "write each submitted frame's eyes to DIR/left_NNNNNN.png and right_NNNNNN.png (the PNGs "
                           "fgplay render writes)");
+    c.command->add_option("--frame-times", c.options.frame_times,
+                          "write each frame's wall time (xrBeginFrame to xrEndFrame), predicted display period, GPU time "
+                          "and governor setting to this CSV file");
 }
 
 int XrCommand::run() {

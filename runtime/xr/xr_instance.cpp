@@ -51,8 +51,8 @@ std::string no_runtime_message(XrResult result) {
     const char* json = std::getenv("XR_RUNTIME_JSON");
     return fmt::format(
         "no OpenXR runtime is available ({}). fgplay xr needs an OpenXR runtime with XR_KHR_vulkan_enable2 "
-        "for a headset: install one (Monado: the Debian package monado-service, then start monado-service; "
-        "SteamVR on other systems) or point XR_RUNTIME_JSON at a runtime manifest{}. "
+        "for a headset: install one (Monado: monado-service from Debian 13 or later, or built from source as "
+        "bench/monado/build.sh does; SteamVR on other systems) or point XR_RUNTIME_JSON at a runtime manifest{}. "
         "Without a headset, play the pack in a window with `fgplay view PACK`.",
         result_name(result), json ? fmt::format(" (XR_RUNTIME_JSON is '{}')", json) : "");
 }

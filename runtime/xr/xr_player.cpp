@@ -28,6 +28,7 @@
 #include "frame/display_period.h"
 #include "frame/frame_governor.h"
 #include "frame/trade_off_ladder.h"
+#include "xr/frame_time_log.h"
 #include "xr/visibility_mask.h"
 #include "xr/session_lifecycle.h"
 #include "xr/vulkan_binding.h"
@@ -156,6 +157,9 @@ public:
     }
 
     const PlayStats& stats() const { return stats_; }
+    const FrameTimeLog& frame_times() const { return frame_times_; }
+    // The budget the frames are held to (or would be, without the governor); 0 when none is known.
+    double frame_budget_ms() { return budget_ms().value_or(0.0); }
     const SessionLifecycle& lifecycle() const { return lifecycle_; }
     const FrameSettings& frame_settings() const { return frame_; }
     VkFormat format() const { return format_; }
@@ -232,14 +236,17 @@ private:
         XrFrameWaitInfo wi{XR_TYPE_FRAME_WAIT_INFO};
         XrFrameState fs{XR_TYPE_FRAME_STATE};
         check(xrWaitFrame(session_, &wi, &fs), "xrWaitFrame");
+        display_period_.observe(static_cast<double>(fs.predictedDisplayPeriod) * 1e-6);
+        const auto begin = std::chrono::steady_clock::now();
         XrFrameBeginInfo bi{XR_TYPE_FRAME_BEGIN_INFO};
         check(xrBeginFrame(session_, &bi), "xrBeginFrame");
+        last_gpu_ms_ = 0.0;
 
         XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
         XrCompositionLayerProjectionView projection[2] = {{XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW},
                                                           {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW}};
         std::vector<const XrCompositionLayerBaseHeader*> layers;
-        if (fs.shouldRender && render(fs.predictedDisplayTime, fs.predictedDisplayPeriod, projection)) {
+        if (fs.shouldRender && render(fs.predictedDisplayTime, projection)) {
             layer.space = space_;
             layer.viewCount = 2;
             layer.views = projection;
@@ -251,11 +258,20 @@ private:
         ei.layerCount = static_cast<std::uint32_t>(layers.size());
         ei.layers = layers.data();
         check(xrEndFrame(session_, &ei), "xrEndFrame");
+        FrameTimeRow row;
+        row.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+        row.period_ms = static_cast<double>(fs.predictedDisplayPeriod) * 1e-6;
+        row.gpu_ms = last_gpu_ms_;
+        if (governor_) {
+            row.level = governor_->level();
+            row.render_scale = governor_->effective().render_scale;
+        }
+        frame_times_.add(row);
     }
 
     // Renders both eyes for the views predicted at `time`; false (no layer) when tracking is lost
     // or a snap turn has the view at black.
-    bool render(XrTime time, XrDuration period_ns, XrCompositionLayerProjectionView* projection) {
+    bool render(XrTime time, XrCompositionLayerProjectionView* projection) {
         XrViewLocateInfo li{XR_TYPE_VIEW_LOCATE_INFO};
         li.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
         li.displayTime = time;
@@ -330,7 +346,7 @@ private:
         executor_->set_frame(gpu);
         executor_->set_scene(viewer.scene);
         FrameStats fs = executor_->run();
-        if (options_.governor) govern(fs, period_ns);
+        if (options_.governor) govern(fs);
         if (!options_.record.empty()) record_frame();
         swapchains_[0]->present(ctx_, executor_->image("final.left"));
         swapchains_[1]->present(ctx_, executor_->image("final.right"));
@@ -355,7 +371,10 @@ private:
             projection[eye].subImage.imageArrayIndex = 0;
         }
         ++stats_.frames;
-        if (auto it = fs.gpu_ms.find("frame"); it != fs.gpu_ms.end()) stats_.gpu_ms_sum += it->second;
+        if (auto it = fs.gpu_ms.find("frame"); it != fs.gpu_ms.end()) {
+            stats_.gpu_ms_sum += it->second;
+            last_gpu_ms_ = it->second;
+        }
         for (const auto& [pass, ms] : fs.gpu_ms) stats_.pass_ms_sum[pass] += ms;
         return true;
     }
@@ -372,8 +391,7 @@ private:
 
     // Reads this frame's GPU time; a new level takes effect from the next frame (new sizes and
     // pipelines), logged with its reason.
-    void govern(const FrameStats& fs, XrDuration period_ns) {
-        display_period_.observe(static_cast<double>(period_ns) * 1e-6);
+    void govern(const FrameStats& fs) {
         auto it = fs.gpu_ms.find("frame");
         const auto budget = budget_ms();
         if (it == fs.gpu_ms.end() || !budget) return;
@@ -618,6 +636,8 @@ private:
     LensEllipse lenses_[2];
     bool masks_dirty_ = true;
     PlayStats stats_;
+    double last_gpu_ms_ = 0.0;
+    FrameTimeLog frame_times_;
 };
 
 }  // namespace
@@ -676,6 +696,9 @@ int play_xr(const XrPlayOptions& o) {
                     for (const auto& [pass, ms] : s.pass_ms_sum) passes += fmt::format(" {} {:.2f} ms,", pass, ms / s.frames);
                     fmt::print("mean GPU time per frame:{}\n", passes.substr(0, passes.size() - 1));
                 }
+                if (auto line = player.frame_times().summary(player.frame_budget_ms()); !line.empty()) fmt::print("{}\n", line);
+                if (!o.frame_times.empty() && !player.frame_times().write_csv(o.frame_times))
+                    throw std::runtime_error(fmt::format("--frame-times: cannot write {}", o.frame_times));
                 if (player.has_depth_layer() && s.frames > 0)
                     fmt::print("depth layer: {} frames, {:.2f} ms per frame for both eyes (conversion pass, copy, wait)\n", s.frames,
                                s.depth_ms_sum / s.frames);
