@@ -66,7 +66,7 @@ void add_taa_passes(FrameGraph& g) {
         p.bind("fg_resolved", resolved, Access::Write);
         p.bind("fg_resolved_depth", depth, Access::Write);
         p.bind("fg_final", "final." + eye, Access::Write);
-        p.set_push(TaaPush{view, static_cast<float>(g.settings.taa_upscale())});
+        p.set_push(TaaPush{view, static_cast<float>(g.settings.taa_upscale()), static_cast<float>(g.settings.taa_sharpen)});
         p.invocations = {w, h, 1};
         g.add_pass(std::move(p));
     }

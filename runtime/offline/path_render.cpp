@@ -27,6 +27,7 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     f.detail_scale = s.supersample / s.detail;
     f.taa = s.taa;
     set_taa_upscale(f, s.taa_upscale);
+    f.taa_sharpen = s.taa_sharpen;
     f.stereo = s.stereo;
     f.projection = s.projection;
     f.cone_levels = s.cone_levels;

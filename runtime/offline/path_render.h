@@ -26,6 +26,7 @@ struct PathRenderSettings {
     double detail = 1.0;                      // the hit threshold is 1 / detail of an output pixel
     bool taa = false;                         // temporal anti-aliasing, history from frame to frame
     double taa_upscale = 1.0;                 // with taa: temporal upsampling (marched at 1/this per axis)
+    double taa_sharpen = kTaaSharpen;         // with taa: sharpening of slowly moving history
     double aperture = 0.0;                    // depth of field over the samples: the lens's diameter
     double focus = 0.0;                       // ... focused this far ahead (0: at the view's centre, per frame)
     double shutter = 0.0;                     // motion blur over the samples: the open share of a frame

@@ -64,6 +64,7 @@ int render(const RenderOptions& o) {
             return 2;
         }
         set_taa_upscale(frame, o.taa_upscale);
+        frame.taa_sharpen = o.taa_sharpen;
         if (o.shutter > 0.0) {
             fmt::print(stderr, "fgplay: --shutter blurs the motion along a camera path: add --path P\n");
             return 2;

@@ -32,6 +32,7 @@ struct RenderOptions {
     double detail = 1.0;             // the hit threshold and normal taps: 1 / detail of an output pixel
     bool taa = false;                // temporal anti-aliasing (with --frames or --path: history carried)
     double taa_upscale = 1.0;        // temporal upsampling: marched at 1/this of the size per axis
+    double taa_sharpen = kTaaSharpen;   // with taa: sharpening of slowly moving history, 0 = none
     double aperture = 0.0;           // depth of field: the lens's diameter in scene units (0: pinhole)
     double focus = 0.0;              // ... focused this far ahead (0: at what the view's centre sees)
     double shutter = 0.0;            // with --path: motion blur, the open share of each frame's interval

@@ -63,6 +63,7 @@ int render_path(const RenderOptions& o) {
     s.detail = o.detail;
     s.taa = o.taa;
     s.taa_upscale = o.taa_upscale;
+    s.taa_sharpen = o.taa_sharpen;
     s.aperture = o.aperture;
     s.focus = o.focus;
     s.shutter = o.shutter;

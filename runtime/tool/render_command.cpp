@@ -50,6 +50,11 @@ void add_render_command(CLI::App& app, RenderCommand& c) {
                        "(1.5 or 2: fewer rays, softer under motion; a still view refines to 16 samples per pixel)")
         ->capture_default_str()
         ->check(CLI::Range(1.0, 2.0));
+    render->add_option("--taa-sharpen", r.taa_sharpen,
+                       "with --taa: how much the shown picture sharpens history moving less than a pixel a frame, "
+                       "which each frame's resampling blurs (0: none)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     render->add_option("--aperture", r.aperture,
                        "depth of field (with --samples): the thin lens's diameter in scene units; 0 is a pinhole")
         ->capture_default_str()

@@ -37,6 +37,10 @@ void add_xr_command(CLI::App& app, XrCommand& c) {
                           "with --taa: march 1/F of the swapchain's size per axis (1.5 or 2) and resolve to all of it")
         ->capture_default_str()
         ->check(CLI::Range(1.0, 2.0));
+    c.command->add_option("--taa-sharpen", c.options.taa_sharpen,
+                          "with --taa: how much the shown picture sharpens history moving less than a pixel a frame (0: none)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     c.command->add_flag("--check-collisions", c.options.check_collisions,
                         "watch the head with the CPU twin of the scene and report how close it came");
     c.command->add_option("--device", c.options.device, "Vulkan device: index or name substring");

@@ -110,6 +110,7 @@ public:
         frame_.cone_levels = o.cone_levels;
         frame_.knobs = o.knobs;
         frame_.taa = o.taa;
+        frame_.taa_sharpen = o.taa_sharpen;
         // The swapchain's pixels are the output's: a render size of its own marches finer or coarser
         // rays that still hit by them.
         base_detail_scale_ = frame_.detail_scale =

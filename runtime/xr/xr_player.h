@@ -34,6 +34,7 @@ struct XrPlayOptions {
     bool wrap = true;                    // wrap the head by whole periods in looping scenes
     bool taa = false;                    // temporal anti-aliasing (static scenes)
     double taa_upscale = 1.0;            // with it, temporal upsampling from 1/this of the size per axis
+    double taa_sharpen = kTaaSharpen;    // with it, sharpening of slowly moving history
     std::string frame_times;             // CSV file: each frame's wall time, predicted period, GPU time and setting
     std::string record;                  // folder: each submitted frame's eyes as PNG, as fgplay render writes them
 };

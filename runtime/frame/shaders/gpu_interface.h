@@ -178,6 +178,7 @@ struct FoveaPush {
 struct TaaPush {
     int view;
     float upscale;   // output pixels per marched pixel (temporal upsampling), 1 without
+    float sharpen;   // the shown picture's sharpening of slowly moving history (0: none)
 };
 
 struct ProbePush {

@@ -20,7 +20,9 @@
 //   42.8, the bulb at 96²), 1 at a pixel of motion per frame and beyond, where lag shows;
 // - and blended with the current sample by a weight that grows with the motion (0.1 still, 0.2 at a
 //   pixel per frame and beyond), so a moving picture carries less lag and resampling blur, and below
-//   a pixel a frame with how far between texels the history falls (up to 0.35 halfway).
+//   a pixel a frame with how far between texels the history falls (up to 0.35 halfway);
+// - what is shown (not what is kept) sharpens slowly moving history by the blur its fetch adds
+//   (TaaPush.sharpen, `--taa-sharpen`).
 //
 // When the head stops (GpuFrame.still_frames), each pixel averages its samples with equal weights:
 // progressive refinement, the picture of 16 samples per pixel after 16 still frames.
@@ -97,25 +99,39 @@ float fg_lanczos3(float x)
     return 3.0 * sin(px) * sin(px / 3.0) / (px * px);
 }
 
-vec3 fg_history_at(vec2 at, ivec2 size)
+vec3 fg_history_at(vec2 at, ivec2 size, float sharpen, out vec3 sharpened)
 {
     vec2 s = at - 0.5;
     ivec2 base = ivec2(floor(s));
     vec2 f = s - vec2(base);
-    float wx[6], wy[6];
-    for (int i = 0; i < 6; ++i) {
-        wx[i] = fg_lanczos3(float(i - 2) - f.x);
-        wy[i] = fg_lanczos3(float(i - 2) - f.y);
+    // Tap i's weight is w[i + 1]; w[0] and w[7], outside the window, pad the sharpening below.
+    float wx[8], wy[8];
+    wx[0] = wy[0] = wx[7] = wy[7] = 0.0;
+    for (int i = 1; i < 7; ++i) {
+        wx[i] = fg_lanczos3(float(i - 3) - f.x);
+        wy[i] = fg_lanczos3(float(i - 3) - f.y);
     }
-    vec3 sum = vec3(0.0);
-    float weight = 0.0;
+    // The same taps sharpened: the filtered history less a share of its neighbours' one texel away
+    // (an unsharp mask of the interpolated picture, in each axis).
+    float sx[6], sy[6];
+    for (int i = 0; i < 6; ++i) {
+        sx[i] = (1.0 + sharpen) * wx[i + 1] - 0.5 * sharpen * (wx[i] + wx[i + 2]);
+        sy[i] = (1.0 + sharpen) * wy[i + 1] - 0.5 * sharpen * (wy[i] + wy[i + 2]);
+    }
+    vec3 sum = vec3(0.0), sharp = vec3(0.0);
+    float weight = 0.0, sharp_weight = 0.0;
     for (int j = 0; j < 6; ++j)
         for (int i = 0; i < 6; ++i) {
             ivec2 texel = clamp(base + ivec2(i - 2, j - 2), ivec2(0), size - 1);
-            float wij = wx[i] * wy[j];
-            sum += wij * imageLoad(fg_history, texel).rgb;
+            vec3 h = imageLoad(fg_history, texel).rgb;
+            float wij = wx[i + 1] * wy[j + 1];
+            sum += wij * h;
             weight += wij;
+            float sij = sx[i] * sy[j];
+            sharp += sij * h;
+            sharp_weight += sij;
         }
+    sharpened = max(sharp / sharp_weight, vec3(0.0));
     return max(sum / weight, vec3(0.0));
 }
 
@@ -179,13 +195,15 @@ void main()
     imageStore(fg_resolved_depth, pixel, vec4(t));
     // The neighbourhood's colour statistics, for the clip box, and upsampling, the marched frame
     // filtered to this pixel (a Gaussian of a pixel's width, separable), where history is lost.
-    vec3 m1 = vec3(0.0), m2 = vec3(0.0), filtered = vec3(0.0);
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0), filtered = vec3(0.0), lowest = vec3(1e30), highest = vec3(-1e30);
     float filtered_weight = 0.0;
     vec3 gx = exp(-2.0 * pow(offset.x + vec3(-scale, 0.0, scale), vec3(2.0)));
     vec3 gy = exp(-2.0 * pow(offset.y + vec3(-scale, 0.0, scale), vec3(2.0)));
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
             vec3 c = fg_current(k + ivec2(i, j), size);
+            lowest = min(lowest, c);
+            highest = max(highest, c);
             vec3 y = fg_ycocg(c);
             m1 += y;
             m2 += y * y;
@@ -197,6 +215,7 @@ void main()
     vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
     vec3 result = upsampling ? filtered / filtered_weight : current;
     float samples = 1.0;   // the weight of samples the result holds
+    vec3 shown = result;   // what is displayed: the result, its history sharpened where it moves slowly
 
     if (fg_frame.taa_history != 0u && !fg_outside_lens(pc.view, centre / scale / vec2(size), vec2(0.0)) &&
         fg_kept() >= kFadedOut) {
@@ -225,26 +244,37 @@ void main()
             float w = inside ? 1.0 : 0.0;
             samples = before + w;
             result = (history.rgb * before + current * w) / samples;
+            shown = result;
         } else if (seen) {
             float motion = length(at - centre);
             // Upsampled, the box comes from marched pixels `scale` output pixels apart: it is as much wider
             // (1 / scale tighter cost the bulb 2 dB under motion at 2, scale wider gained 0.8).
             float sigmas = mix(kStillSigmas, kMovingSigmas, clamp(motion, 0.0, 1.0)) * scale;
-            vec3 history = fg_rgb(fg_clip(fg_ycocg(fg_history_at(at, out_size)), m1, sigmas * sigma));
+            float slow = 1.0 - clamp(motion, 0.0, 1.0);
+            vec2 between = fract(at - 0.5);
+            vec2 halfway = 4.0 * between * (1.0 - between);
+            // What is shown sharpens the history by how much this frame's fetch blurred it (most
+            // halfway between texels, and slowly moving, where the same loss repeats frame after
+            // frame), within the range of the current neighbourhood and the history: it restores the
+            // grooves the resampling washes out without lifting noise or aliasing above what the
+            // samples show (slow orbits: detail 0.87-0.88 to 0.95-0.96 of the reference).
+            float sharpen = pc.sharpen * slow * slow * max(halfway.x, halfway.y);
+            vec3 sharp_history;
+            vec3 history = fg_rgb(fg_clip(fg_ycocg(fg_history_at(at, out_size, sharpen, sharp_history)), m1, sigmas * sigma));
+            vec3 shown_history = clamp(fg_rgb(fg_clip(fg_ycocg(sharp_history), m1, sigmas * sigma)),
+                                       min(lowest, history), max(highest, history));
             // Below a pixel a frame the resampling's loss repeats frame after frame, most where the
             // history falls halfway between texels: there a new sample weighs more, so the picture
             // remembers fewer resamplings (slow orbits: detail 0.79 to 0.87, +1.1 dB; beyond a pixel
             // a frame the offsets vary and the extra weight only added noise).
-            vec2 between = fract(at - 0.5);
-            vec2 halfway = 4.0 * between * (1.0 - between);
-            float slow = 1.0 - clamp(motion, 0.0, 1.0);
             float blend = mix(kStillBlend, kMovingBlend, 1.0 - slow) + kHalfwayBlend * max(halfway.x, halfway.y) * slow;
             float before = min(imageLoad(fg_history, ivec2(floor(at))).a, 1.0 / blend - 1.0);
             samples = before + weight;
             result = (history * before + current * weight) / samples;
+            shown = (shown_history * before + current * weight) / samples;
         }
     }
     vec3 rgb = max(result, vec3(0.0));
     imageStore(fg_resolved, pixel, vec4(rgb, samples));
-    imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(rgb) * fg_kept(), 1.0));
+    imageStore(fg_final, pixel, vec4(fg_linear_to_srgb(max(shown, vec3(0.0))) * fg_kept(), 1.0));
 }
