@@ -19,7 +19,8 @@ frames) and OUT/taa_quality.png (PSNR per frame). Traces start at the graph's ca
 (the gaze circling 15 degrees at 60 deg/s), fast_turn (yaw +-30 degrees at up to 150 deg/s), walk (sideways at
 0.3 scene units/s, looking ahead), still (the first pose held), and the slow ones where resampling blur
 shows: slow_orbit (the camera circling the target at 20 deg/s, 0.2-0.5 px a frame at 256²) and
-slow_walk (sideways at 0.05 units/s).
+slow_walk (sideways at 0.05 units/s); burst (flying forward at 0.3 units/s with a 90 deg/s turn
+from frame 18 to 36).
 """
 import argparse
 import csv
@@ -80,6 +81,12 @@ def trace(name, camera):
             n = math.hypot(side[0], side[2])
             p = [e + speed * t * s / n for e, s in zip(eye, side)]
             keys.append({"time": t, "position": p, "target": [q + a for q, a in zip(p, ahead)]})
+        elif name == "burst":
+            # Flying forward at 0.3 units/s, turning at 90 deg/s from 0.2 to 0.4 s (frames 18-36).
+            yaw = math.radians(90.0) * min(max(t - 0.2, 0.0), 0.2)
+            p = [e + 0.3 * t * a / math.sqrt(sum(x * x for x in ahead)) for e, a in zip(eye, ahead)]
+            d = rotate_y(ahead, yaw)
+            keys.append({"time": t, "position": p, "target": [q + x for q, x in zip(p, d)]})
         elif name == "slow_orbit":
             back = rotate_y([-x for x in ahead], math.radians(20.0) * t)
             keys.append({"time": t, "position": [c + b for c, b in zip(target, back)], "target": target})
@@ -153,6 +160,11 @@ for graph in GRAPHS:
                 rows.append([scene, name, method, i, f"{p:.3f}", f"{s:.5f}", f"{f:.3f}", f"{d:.4f}"])
                 stats.append((p, s, f, d))
             curves[(scene, name, method)] = [x[0] for x in stats]
+            if name == "burst":
+                turn = [x[2] for x in stats[19:37]]
+                straight = [x[2] for x in stats[8:18] + stats[38:]]
+                summary.append(f"{scene}, burst, {method}: flicker {np.median(straight):.2f} flying straight "
+                               f"(frames 8-17, 38-), {np.median(turn):.2f} in the turn (frames 19-36)")
             settled = stats[SETTLED:]
             med = lambda k: float(np.median([x[k] for x in settled]))
             summary.append(f"| {scene} | {name} | {method} | {med(0):.2f} | {min(x[0] for x in settled):.2f} | "
