@@ -7,7 +7,9 @@
 #   REPEATS=3 SIZE=1024 FG_BUILD_DIR=build  (environment, defaults shown; or FGC=... FGPLAY=...;
 #   KEEP_WORK=DIR keeps the pictures and times there: a later run with the same DIR reuses its
 #   16-sample references and adds its runs to the table; ROWS="fast multiray" picks the rows,
-#   SAMPLES="1 4" the sample counts, REF=0 skips the 16-sample references and so the PSNR)
+#   SAMPLES="1 4" the sample counts, REF=0 skips the references and so the PSNR, REF_SAMPLES=16 their
+#   samples a pixel (a square), AREA=0 Fractograph's soft shadow: 0 its cone-angle penumbra in every
+#   sample, deterministic as Mandelbulber2's; 1 the area light, a point of the disc a sample)
 #
 # Two rows, one per AO method:
 #   fast AO       Mandelbulber2 ambient_occlusion_mode 0 (quality 4: 15 distance samples along the normal)
@@ -15,11 +17,11 @@
 #   multi-ray AO  Mandelbulber2 ambient_occlusion_mode 1 (quality 2: 29 rays over the sphere, about half
 #                 of them above the surface) against bench/mandelbulber2/mandelbulb_lit_marched_ao.json
 #                 (light.marched_ao, 16 cones of up to 24 steps)
-# Both tools are deterministic here (no Monte Carlo shadows or AO), so "matched noise" means matched
-# anti-aliasing: Mandelbulber2's antialiasing_size N (N x N samples a pixel) against fgplay render
-# --samples N^2, at 1 and 4 samples a pixel. The error of each picture is its PSNR against the same
-# tool's own 16-sample picture (antialiasing_size 4, --samples 16), so each tool is judged by how close
-# it comes to its own converged image.
+# Both tools are deterministic here (no Monte Carlo shadows or AO; with AREA=1 Fractograph's shadow
+# is), so "matched noise" means matched anti-aliasing: Mandelbulber2's antialiasing_size N (N x N
+# samples a pixel) against fgplay render --samples N^2, at 1 and 4 samples a pixel. The error of each
+# picture is its PSNR against the same tool's own REF_SAMPLES picture (antialiasing_size 4,
+# --samples 16 by default), so each tool is judged by how close it comes to its own converged image.
 # Timing: wall time and CPU time (user + sys) of each whole command, start-up and PNG writing
 # included, REPEATS times, the two tools alternating, medians reported. fgplay render always renders
 # a stereo pair (two 1024x1024 eyes, same work each: these scenes shade every hit themselves); the
@@ -36,6 +38,8 @@ REPEATS=${REPEATS:-3}
 SIZE=${SIZE:-1024}
 SAMPLES=${SAMPLES:-1 4}
 REF=${REF:-1}
+REF_SAMPLES=${REF_SAMPLES:-16}
+AREA=${AREA:-0}
 export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$BUILD/mesa-cache}
 export QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen}
 MB2=${MB2:-mandelbulber2}
@@ -54,7 +58,18 @@ declare -A MB_AO=([fast]="ambient_occlusion_mode=0#ambient_occlusion_quality=4"
 declare -A FG_GRAPH=([fast]="$ROOT/graphs/examples/lit_mandelbulb.json"
                      [multiray]="$HERE/mandelbulb_lit_marched_ao.json")
 ROWS=${ROWS:-fast multiray}
-for row in $ROWS; do "$FGC" compile "${FG_GRAPH[$row]}" -o "$WORK/$row.fgpack" >/dev/null; done
+for row in $ROWS; do
+  # The graph with its soft shadow's "area" set to AREA.
+  /usr/bin/python3 - "${FG_GRAPH[$row]}" "$WORK/$row.json" "$AREA" <<'PY'
+import json, sys
+graph = json.load(open(sys.argv[1]))
+for node in graph["nodes"]:
+    if node["type"] == "light.soft_shadow":
+        node.setdefault("inputs", {})["area"] = sys.argv[3] == "1"
+json.dump(graph, open(sys.argv[2], "w"))
+PY
+  "$FGC" compile "$WORK/$row.json" -o "$WORK/$row.fgpack" >/dev/null
+done
 
 mb_aa() {  # samples -> Mandelbulber2 anti-aliasing overrides
   local n; n=$(/usr/bin/python3 -c "import math; print(math.isqrt($1))")
@@ -80,11 +95,11 @@ run_fg() {  # row samples tag -> image $WORK/fg-ROW-SAMPLES-TAG.png (left eye)
 touch "$WORK/times.csv"
 # One warm-up run each (shader caches, page cache), not counted; then the references.
 for row in $ROWS; do
-  echo "==> $row: warm-up and 16-sample references"
+  echo "==> $row: warm-up and $REF_SAMPLES-sample references"
   run_fg "$row" 1 warm; run_mb "$row" 1 warm
   if [ "$REF" = 1 ]; then
-    [ -s "$WORK/mb-$row-16-ref.png" ] || run_mb "$row" 16 ref
-    [ -s "$WORK/fg-$row-16-ref.png" ] || run_fg "$row" 16 ref
+    [ -s "$WORK/mb-$row-$REF_SAMPLES-ref.png" ] || run_mb "$row" "$REF_SAMPLES" ref
+    [ -s "$WORK/fg-$row-$REF_SAMPLES-ref.png" ] || run_fg "$row" "$REF_SAMPLES" ref
   fi
 done
 for r in $(seq 1 "$REPEATS"); do
@@ -98,12 +113,13 @@ for r in $(seq 1 "$REPEATS"); do
 done
 
 # Table, error figures and the side-by-side picture.
-/usr/bin/python3 - "$WORK" "$OUT" "$REPEATS" "$SIZE" <<'PY'
+/usr/bin/python3 - "$WORK" "$OUT" "$REPEATS" "$SIZE" "$REF_SAMPLES" "$AREA" <<'PY'
 import csv, statistics, sys, pathlib, datetime, os
 import numpy as np
 from PIL import Image, ImageDraw
 from skimage.metrics import peak_signal_noise_ratio as psnr
 work, out, repeats, size = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+ref_samples, area = int(sys.argv[5]), sys.argv[6] == "1"
 rows = list(csv.reader(open(work / "times.csv")))
 def is_run(tag): return tag[:1] == "r" and tag[1:].isdigit()   # timed runs; not "warm" or "ref"
 def load(p): return np.asarray(Image.open(p).convert("RGB"))
@@ -120,7 +136,7 @@ for row in present:
             wall = statistics.median(float(r[4]) for r in runs)
             cpu = statistics.median(float(r[5]) for r in runs)
             pre = "mb" if tool == "mandelbulber2" else "fg"
-            ref = work / f"{pre}-{row}-16-ref.png"
+            ref = work / f"{pre}-{row}-{ref_samples}-ref.png"
             err = psnr(load(ref), load(work / f"{pre}-{row}-{s}-r1.png"), data_range=255) if ref.exists() else float("nan")
             med[tool] = (wall, cpu, err, len(runs))
             raw += [[tool, row, s, r[3], r[4], r[5]] for r in runs]
@@ -138,7 +154,8 @@ with open(out / "runs.csv", "w", newline="") as f:
 md = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)] + ["| " + " | ".join(map(str, r)) + " |" for r in table]
 (out / "results.md").write_text(
     f"{size}x{size}, medians of the runs counted in the last column, {os.cpu_count()} CPU cores, {datetime.date.today()}; "
-    "PSNR against the same tool's 16-sample picture.\n\n" + "\n".join(md) + "\n")
+    f"PSNR against the same tool's {ref_samples}-sample picture; Fractograph's soft shadow "
+    f"{'an area light (a point of the disc a sample)' if area else 'its cone-angle penumbra in every sample'}.\n\n" + "\n".join(md) + "\n")
 print("\n".join(md))
 # Side by side: Mandelbulber2 left, Fractograph right, one row per AO method, at 4 samples a pixel
 # (or the most there are).
