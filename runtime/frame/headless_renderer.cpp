@@ -53,8 +53,7 @@ FrameStats HeadlessRenderer::run(const HeadPose& head, double time, std::uint32_
     FrameSettings settings = executor_->graph().settings;
     settings.detail_scale = detail_scale_;
     GpuFrame gpu = make_gpu_frame(views_, settings, time, stereo_.world_scale, frame_index);
-    if (light_sample_)
-        gpu.area_light = {static_cast<float>(light_sample_->x), static_cast<float>(light_sample_->y), 1.0f, 0.0f};
+    if (light_sample_) gpu.area_light = {static_cast<float>(*light_sample_), 0.0f, 1.0f, 0.0f};
     executor_->set_frame(gpu);
     return executor_->run();
 }

@@ -59,9 +59,10 @@ public:
         stereo_.lens = offset;
         stereo_.focus = offset == glm::dvec2(0.0) ? 0.0 : focus_;
     }
-    // Area lights from the next frame on: the sample's point in [0, 1)^2 (light_pattern), or none for
-    // a single frame (light.soft_shadow's cone-angle penumbra).
-    void set_light_sample(std::optional<glm::dvec2> point) { light_sample_ = point; }
+    // Area lights from the next frame on: the sample's index (each pixel's point on the light is
+    // its own scrambling of one sequence, fg_light_sample), or none for a single frame
+    // (light.soft_shadow's cone-angle penumbra).
+    void set_light_sample(std::optional<std::uint32_t> index) { light_sample_ = index; }
     // Output pixels per marched pixel from the next frame on (FrameSettings::detail_scale: a picture
     // shown at another size than it is rendered); a change forgets the frames before.
     void set_detail_scale(double scale);
@@ -79,7 +80,7 @@ private:
     double detail_scale_ = 1.0;
     StereoSettings stereo_;
     double aperture_ = 0.0, focus_ = 0.0;
-    std::optional<glm::dvec2> light_sample_;
+    std::optional<std::uint32_t> light_sample_;
     StereoViews views_;
     std::unique_ptr<FrameExecutor> executor_;
 };

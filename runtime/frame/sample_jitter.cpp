@@ -36,17 +36,6 @@ std::vector<glm::dvec2> lens_pattern(std::uint32_t n) {
     return out;
 }
 
-std::vector<glm::dvec2> light_pattern(std::uint32_t n) {
-    // The plastic number g (g^3 = g + 1) gives the R2 sequence's steps 1/g and 1/g^2.
-    const double g = 1.32471795724474602596;
-    std::vector<glm::dvec2> out;
-    for (std::uint32_t k = 0; k < n; ++k) {
-        const glm::dvec2 at = 0.5 + static_cast<double>(k) * glm::dvec2(1.0 / g, 1.0 / (g * g));
-        out.push_back(at - glm::floor(at));
-    }
-    return out;
-}
-
 std::vector<double> shutter_pattern(std::uint32_t n) {
     std::vector<double> out;
     for (std::uint32_t k = 0; k < n; ++k) out.push_back(radical_inverse(k, 11));

@@ -23,12 +23,6 @@ inline constexpr std::uint32_t kRefinedFrames = 16;
 // mapped to the disc by Shirley and Chiu's concentric map, which keeps them evenly spread.
 std::vector<glm::dvec2> lens_pattern(std::uint32_t n);
 
-// Where n samples fall on an area light, in [0, 1)^2 (the shaders shift each pixel's points and map
-// them onto the light's disc: fg_light_sample): Roberts' R2 sequence, low-discrepancy at every n and
-// built on no Halton base, so a sample's point on the light follows neither its place in the pixel,
-// on the lens, nor its moment.
-std::vector<glm::dvec2> light_pattern(std::uint32_t n);
-
 // When n samples look within an open shutter, in [0, 1): the radical inverse in base 11, another
 // base again, so a sample's moment follows neither its place in the pixel nor on the lens.
 std::vector<double> shutter_pattern(std::uint32_t n);

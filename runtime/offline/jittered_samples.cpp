@@ -51,12 +51,11 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<Sam
     const std::vector<glm::dvec2> pattern = sample_pattern(samples);
     const std::vector<glm::dvec2> lens = lens_pattern(samples);
     const std::vector<double> shutter = shutter_pattern(samples);
-    const std::vector<glm::dvec2> light = light_pattern(samples);
     const std::uint32_t width = renderer.graph().output_width;
     for (std::uint32_t k = 0; k < samples; ++k) {
         renderer.set_jitter(pattern[k]);
         if (renderer.aperture() > 0.0) renderer.set_lens(lens[k] * (0.5 * renderer.aperture()));
-        renderer.set_light_sample(light[k]);
+        renderer.set_light_sample(k);
         const SampleMoment m = moment(shutter[k]);
         RenderedFrame r = renderer.render(m.head, m.time, frame_index);
         const SampledTiles* l = sampled_left ? &*sampled_left : nullptr;

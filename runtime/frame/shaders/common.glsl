@@ -234,15 +234,44 @@ vec3 fg_linear_to_srgb(vec3 c)
 
 // Area lights (the implicit input `light_sample`, light.soft_shadow): this sample's point on a
 // light's unit disc (xy) and 1 while offline samples accumulate (z), or all 0 in a single frame.
-// Each pixel shifts the frame's point (GpuFrame.area_light) by an offset of its own, a Cranley-
-// Patterson rotation: a pixel's samples still cover the disc evenly, and a penumbra's few samples
-// show as fine noise, not as a stack of hard shadows. The shade and AOV passes set the pixel.
+// Sample k of a pixel is point k of the Sobol (0,2)-sequence, Owen-scrambled by a seed of the
+// pixel's own (Burley's hash-based scrambling): every prefix of a pixel's points covers the disc
+// evenly, each power-of-two prefix stratified in every elementary interval, so a penumbra's error
+// falls faster than with one shifted low-discrepancy sequence (the lit bulb at 16 samples: see
+// docs/shading.md), and neighbouring pixels' errors do not repeat each other. The shade and AOV
+// passes set the pixel.
 ivec2 fg_shading_pixel = ivec2(0);
+
+// Point k of the first two Sobol dimensions (van der Corput, and the dimension of x + 1), as
+// 32-bit binary fractions.
+uvec2 fg_sobol2(uint k)
+{
+    uvec2 p = uvec2(0u);
+    uint v = 0x80000000u;
+    for (uint bit = 0u; k != 0u; ++bit, k >>= 1u) {
+        if ((k & 1u) != 0u) p ^= uvec2(0x80000000u >> bit, v);
+        v ^= v >> 1u;
+    }
+    return p;
+}
+
+// Owen's nested uniform scrambling of a 32-bit fraction, by the hash of Burley (JCGT 2020) after
+// Laine and Karras: each digit flips by a function of the seed and the digits above it.
+uint fg_owen_scramble(uint x, uint seed)
+{
+    x = bitfieldReverse(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return bitfieldReverse(x);
+}
 
 vec3 fg_light_sample()
 {
     if (fg_frame.area_light.z == 0.0) return vec3(0.0);
-    // A small integer hash of the pixel (PCG-style, two rounds).
+    // A small integer hash of the pixel (PCG-style, two rounds): the two dimensions' seeds.
     uvec2 h = uvec2(fg_shading_pixel) * 1664525u + 1013904223u;
     h.x += h.y * 1664525u;
     h.y += h.x * 1664525u;
@@ -250,7 +279,10 @@ vec3 fg_light_sample()
     h.x += h.y * 1664525u;
     h.y += h.x * 1664525u;
     h ^= h >> 16u;
-    vec2 u = 2.0 * fract(fg_frame.area_light.xy + vec2(h) * (1.0 / 4294967296.0)) - 1.0;
+    uvec2 p = fg_sobol2(uint(fg_frame.area_light.x));
+    uvec2 scrambled = uvec2(fg_owen_scramble(p.x, h.x), fg_owen_scramble(p.y, h.y));
+    // The top 24 bits: a float's, so that no point rounds up to 1.
+    vec2 u = 2.0 * (vec2(scrambled >> 8u) * (1.0 / 16777216.0)) - 1.0;
     if (u.x == 0.0 && u.y == 0.0) return vec3(0.0, 0.0, 1.0);
     // Shirley and Chiu's concentric map of the square onto the disc keeps the points evenly spread.
     const float quarter = 0.785398163;

@@ -94,9 +94,9 @@ struct GpuFrame {
     // Sub-pixel jitter of the eyes' pixel grids (StereoSettings::jitter), in pixels, x right, y
     // down: xy this frame's, zw the previous frame's (whose views are `previous`).
     vec4 jitter;
-    // Area lights while offline samples accumulate: xy this sample's point in [0, 1)^2, which each
-    // pixel shifts and maps onto a light's disc (fg_light_sample), z 1; all 0 in a single frame,
-    // which takes light.soft_shadow's cone-angle penumbra instead.
+    // Area lights while offline samples accumulate: x this sample's index, whose point of a light's
+    // disc each pixel draws from its own scrambling of one sequence (fg_light_sample), z 1; all 0
+    // in a single frame, which takes light.soft_shadow's cone-angle penumbra instead.
     vec4 area_light;
 };
 
