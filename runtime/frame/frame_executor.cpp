@@ -119,7 +119,8 @@ std::string FrameExecutor::program_key(const FramePass& pass) {
     return key;
 }
 
-FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph, PipelineStore* pipelines)
+FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph, PipelineStore* pipelines,
+                             SharedTaaHistory* taa_history)
     : ctx_(ctx), manifest_(pack.manifest), graph_(std::move(graph)), batches_(graph_.batches()) {
     auto check_block = [&](const char* name, std::size_t size) {
         auto it = manifest_.uniform_blocks.find(name);
@@ -140,7 +141,7 @@ FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGrap
             manifest_.name, ctx.device_name()));
     make_programs(pack, pipelines);
     check_declarations();
-    make_resources();
+    make_resources(taa_history);
     make_descriptor_sets();
 }
 
@@ -219,11 +220,24 @@ void FrameExecutor::check_declarations() const {
     }
 }
 
-void FrameExecutor::make_resources() {
+void FrameExecutor::make_resources(SharedTaaHistory* taa_history) {
+    const std::vector<std::string> shared = taa_history ? taa_history_images(graph_) : std::vector<std::string>{};
     for (const auto& img : graph_.images()) {
         auto& versions = images_[img.name];
+        const bool shares = std::find(shared.begin(), shared.end(), img.name) != shared.end();
+        if (shares) {
+            auto it = taa_history->images.find(img.name);
+            if (it != taa_history->images.end() && it->second.front()->format() == vk_format(img.format) &&
+                it->second.front()->extent().width == img.width && it->second.front()->extent().height == img.height) {
+                versions = it->second;
+                adopted_.push_back(img.name);
+                frames_to_fill_ = std::max<std::uint64_t>(frames_to_fill_, versions.size());
+                continue;
+            }
+        }
         for (int i = 0; i < (img.history ? 2 : 1); ++i)
             versions.push_back(std::make_unique<vk::StorageImage>(ctx_, vk_format(img.format), VkExtent2D{img.width, img.height}));
+        if (shares) taa_history->images[img.name] = versions;
         frames_to_fill_ = std::max<std::uint64_t>(frames_to_fill_, versions.size());
     }
     for (const auto& b : graph_.buffers())
@@ -376,11 +390,19 @@ bool FrameExecutor::take_history(const FrameExecutor& from) {
         graph_.output_height != from.graph_.output_height)
         return false;
     forget_history();
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        // What `from` last resolved, or, where it took a history and has not run since, what it took.
-        const vk::StorageImage* source = from.history_copies_.empty() ? from.resolve_image(names[i], from.frames_run_ + 1)
-                                                                      : from.history_copies_[i].first;
-        history_copies_.emplace_back(source, resolve_image(previous(names[i]), frames_run_));
+    const bool shared = std::all_of(names.begin(), names.end(), [&](const std::string& n) {
+        return images_.at(n) == from.images_.at(n);
+    });
+    if (shared && from.history_copies_.empty()) {
+        // The same images: this executor's next frame reads what `from`'s next frame would have.
+        parity_ = (from.parity() + 2 - frames_run_ % 2) % 2;
+    } else {
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            // What `from` last resolved, or, where it took a history and has not run since, what it took.
+            const vk::StorageImage* source = from.history_copies_.empty() ? from.resolve_image(names[i], from.parity() + 1)
+                                                                          : from.history_copies_[i].first;
+            history_copies_.emplace_back(source, resolve_image(previous(names[i]), parity()));
+        }
     }
     // The previous eyes unjittered and re-expressed in this graph's marched pixels: the taa pass
     // finds a point's place in the history from them, this frame's marched size and its factor.
@@ -496,11 +518,13 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
         // placeholder, a history image on the first frame) holds the same bytes on every run.
         const VkClearColorValue zero{};
         const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        for (auto& [_, versions] : images_)
+        for (auto& [name, versions] : images_) {
+            if (std::find(adopted_.begin(), adopted_.end(), name) != adopted_.end()) continue;   // may hold a history
             for (auto& img : versions) {
                 img->transition(cmd, VK_IMAGE_LAYOUT_GENERAL, vk::access::none, vk::access::transfer_write);
                 vkCmdClearColorImage(cmd, img->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
             }
+        }
         vk::memory_barrier(cmd, vk::access::transfer_write, vk::access::compute_read_write);
         images_initialised_ = true;
     }
@@ -554,7 +578,7 @@ void FrameExecutor::record(VkCommandBuffer cmd, vk::GpuTimer* timer) {
         for (std::size_t i : batches_[batch]) {
             const auto& pass = graph_.passes()[i];
             const Program& prog = *pass_programs_[i];
-            VkDescriptorSet set = sets_[i][frames_run_ % 2];
+            VkDescriptorSet set = sets_[i][parity() % 2];
             if (timer && (!open || *open != timed(i))) {
                 if (open) timer->end(cmd, *open);
                 open = &timed(i);
@@ -619,14 +643,14 @@ FrameStats FrameExecutor::run() {
 }
 
 std::vector<std::byte> FrameExecutor::download(const std::string& image) const {
-    // The frame just run has frames_run_ - 1's parity.
-    vk::StorageImage* img = resolve_image(image, frames_run_ + 1);
+    // The frame just run has parity() - 1's parity.
+    vk::StorageImage* img = resolve_image(image, parity() + 1);
     if (!img) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", image));
     return img->download();
 }
 
 vk::StorageImage& FrameExecutor::image(const std::string& name) const {
-    vk::StorageImage* img = resolve_image(name, frames_run_ + 1);
+    vk::StorageImage* img = resolve_image(name, parity() + 1);
     if (!img) throw std::runtime_error(fmt::format("the frame graph has no image '{}'", name));
     return *img;
 }

@@ -45,13 +45,23 @@ struct FrameStats {
     std::map<std::string, double> reuse_skipped;       // per counter group: the mean share of a ray reuse skipped
 };
 
+// Temporal anti-aliasing's history images, shared by the executors of one player that resolve to
+// the same size (a governor's levels and scales): one history in memory, handed over on a level
+// change (take_history) instead of copied. Each holds the images it was built with.
+struct SharedTaaHistory {
+    std::map<std::string, std::vector<std::shared_ptr<vk::StorageImage>>> images;
+};
+
 class FrameExecutor {
 public:
     // Throws std::runtime_error with a clear message for a pack that does not fit this runtime
     // (a missing binding, a knob out of range, a uniform block or push constant of another size,
     // a binding the pass does not declare as the shader uses it).
-    // With `pipelines`, pipelines built before for the same SPIR-V and settings are reused.
-    FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph, PipelineStore* pipelines = nullptr);
+    // With `pipelines`, pipelines built before for the same SPIR-V and settings are reused; with
+    // `taa_history`, the TAA history images of that size and format already there are this
+    // executor's too (and those it makes are put there).
+    FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGraph graph, PipelineStore* pipelines = nullptr,
+                  SharedTaaHistory* taa_history = nullptr);
     ~FrameExecutor();
 
     // The frame's uniforms; the executor adds the previous frame's eyes and whether its levels hold
@@ -71,8 +81,9 @@ public:
     void forget_history();
     // A governor level change: this executor's temporal anti-aliasing continues `from`'s history
     // (both resolve to the same output size, whatever size each marches), so the first frame at
-    // the new level keeps the picture converged so far. The copy is recorded into the next run();
-    // the other histories (reuse, shading) start afresh. False, taking nothing, where the two
+    // the new level keeps the picture converged so far. Where both hold the same images
+    // (SharedTaaHistory) nothing is copied; otherwise the copy is recorded into the next run().
+    // The other histories (reuse, shading) start afresh. False, taking nothing, where the two
     // cannot share one: either without TAA or without a history, or other output sizes.
     bool take_history(const FrameExecutor& from);
 
@@ -102,7 +113,7 @@ private:
     static std::string program_key(const FramePass& pass);
     void make_programs(const Pack& pack, PipelineStore* pipelines);
     void check_declarations() const;
-    void make_resources();
+    void make_resources(SharedTaaHistory* taa_history);
     void make_descriptor_sets();
     // The image a resource name means in a frame of this parity (history images alternate).
     vk::StorageImage* resolve_image(const std::string& name, std::uint64_t frame) const;
@@ -115,7 +126,8 @@ private:
     std::vector<std::vector<std::size_t>> batches_;
     std::map<std::string, Program> programs_;   // by program_key
     std::vector<const Program*> pass_programs_;  // each pass's, by index
-    std::map<std::string, std::vector<std::unique_ptr<vk::StorageImage>>> images_;   // two for history images
+    std::map<std::string, std::vector<std::shared_ptr<vk::StorageImage>>> images_;   // two for history images
+    std::vector<std::string> adopted_;   // images from a SharedTaaHistory: their maker cleared them
     std::map<std::string, std::unique_ptr<vk::Buffer>> buffers_;
     std::unique_ptr<vk::Buffer> frame_, scene_, params_, counters_;
     std::unique_ptr<vk::DescriptorPool> pool_;
@@ -123,6 +135,10 @@ private:
     std::vector<std::byte> params_bytes_;
     bool images_initialised_ = false;
     std::uint64_t frames_run_ = 0;
+    // History images alternate by frame: frame n writes version (n + parity_) % 2. Taking a
+    // shared history aligns parity_ with the giver's, whose last frame wrote the other version.
+    std::uint64_t parity_ = 0;
+    std::uint64_t parity() const { return frames_run_ + parity_; }
     GpuFrame frame_data_{};
     GpuScene scene_data_{};
     GpuView previous_views_[2]{};   // the eyes of the last frame run

@@ -15,13 +15,13 @@ std::vector<float> floats(const std::vector<std::byte>& bytes) {
 }  // namespace
 
 HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame,
-                                   const StereoSettings& stereo, PipelineStore* pipelines)
+                                   const StereoSettings& stereo, PipelineStore* pipelines, SharedTaaHistory* taa_history)
     : ctx_(ctx), pack_(pack), frame_(frame), detail_scale_(frame.detail_scale), stereo_(stereo) {
     set_marched_size(stereo_, frame);
     // The frame graph's sizes depend only on the fields of view, not on the pose.
     views_ = make_views(scene_camera());
     executor_ = std::make_unique<FrameExecutor>(
-        ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, views_.centre.width, views_.centre.height), pipelines);
+        ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, views_.centre.width, views_.centre.height), pipelines, taa_history);
 }
 
 HeadPose HeadlessRenderer::scene_camera() const {

@@ -23,9 +23,10 @@ struct RenderedFrame {
 
 class HeadlessRenderer {
 public:
-    // With `pipelines`, pipelines built before for the same SPIR-V and settings are reused.
+    // With `pipelines`, pipelines built before for the same SPIR-V and settings are reused; with
+    // `taa_history`, renderers of one size hold one TAA history (FrameExecutor::take_history).
     HeadlessRenderer(const vk::Context& ctx, const Pack& pack, const FrameSettings& frame, const StereoSettings& stereo,
-                     PipelineStore* pipelines = nullptr);
+                     PipelineStore* pipelines = nullptr, SharedTaaHistory* taa_history = nullptr);
 
     // The camera the scene starts with (scene.camera), symmetric field of view.
     HeadPose scene_camera() const;

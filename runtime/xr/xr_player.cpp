@@ -450,7 +450,7 @@ private:
         if (slot.executor) ctx_.wait_idle();   // a present may still read its images
         if (executor_ == slot.executor.get()) executor_ = nullptr;
         slot.executor = std::make_unique<FrameExecutor>(
-            ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_);
+            ctx_, pack_, FrameGraph::build(pack_.manifest, frame_, sv.centre.width, sv.centre.height), &pipelines_, &taa_history_);
         slot.width = sv.centre.width;
         slot.height = sv.centre.height;
         return slot;
@@ -613,6 +613,7 @@ private:
     FrameSettings frame_;
     StereoSettings stereo_;
     PipelineStore pipelines_;
+    SharedTaaHistory taa_history_;   // with TAA, every level's and scale's executor holds this one history
     std::map<int, LevelExecutor> executors_;   // per governor level (0 without the governor)
     FrameExecutor* executor_ = nullptr;        // the one in use
     bool levels_prepared_ = false;

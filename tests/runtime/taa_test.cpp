@@ -5,7 +5,8 @@
 // it has gone; a changed parameter starts from the new frame alone; a scene that reads time gets
 // plain frames. Upsampled from 1/1.5 and 1/2 of the output per axis: a still head refines to the
 // output's 16 samples; a turning head keeps its history where the view moved it. A governor level
-// change, to a render scale of 0.85 and back, keeps the picture converged so far.
+// change, to a render scale of 0.85 and back, keeps the picture converged so far; executors that
+// share one history hand it over without a copy, and show what the copy would.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -412,4 +413,50 @@ TEST_F(Taa, a_governor_level_change_keeps_the_converged_picture) {
     std::printf("%s\n", still.c_str());
     EXPECT_GT(b.executor().frame().still_frames, 16u) << "the head stayed still across the change";
     EXPECT_GE(still_after, lower_own - 0.5) << still;
+}
+
+TEST_F(Taa, executors_sharing_one_history_hand_it_over_without_a_copy) {
+    // As the headset player holds its levels: both executors' TAA history is the same two images
+    // per eye, so a level change copies nothing, and shows what copying would, byte for byte.
+    FrameSettings full = settings(true);
+    GovernorLevel top, lower;
+    lower.render_scale = 0.85;
+    const FrameSettings at_top = settings_at_level(full, top, kSize, kSize), at_lower = settings_at_level(full, lower, kSize, kSize);
+    StereoSettings top_stereo, lower_stereo;
+    set_marched_size(top_stereo, at_top);
+    set_marched_size(lower_stereo, at_lower);
+    SharedTaaHistory shared;
+    HeadlessRenderer a(test::shared_context(), bulb(), at_top, top_stereo, nullptr, &shared);
+    HeadlessRenderer b(test::shared_context(), bulb(), at_lower, lower_stereo, nullptr, &shared);
+    HeadlessRenderer copying_a(test::shared_context(), bulb(), at_top, top_stereo);
+    HeadlessRenderer copying_b(test::shared_context(), bulb(), at_lower, lower_stereo);
+    const auto handles = [](HeadlessRenderer& r) {
+        std::vector<VkImage> out;
+        for (const char* name : {"taa.left", "taa.left.previous", "taa_depth.right", "taa_depth.right.previous"})
+            out.push_back(r.executor().image(name).handle());
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    EXPECT_EQ(handles(a), handles(b)) << "the two levels hold one history";
+    EXPECT_NE(handles(copying_a), handles(copying_b));
+
+    for (int i = 0; i < 15; ++i) {
+        a.render(turning(i, 30.0), 0.0, static_cast<std::uint32_t>(i));
+        copying_a.render(turning(i, 30.0), 0.0, static_cast<std::uint32_t>(i));
+    }
+    const auto same_frames = [](HeadlessRenderer& shared_level, HeadlessRenderer& copying_level, int from, int to) {
+        int same = 0;
+        for (int i = from; i < to; ++i) {
+            const HeadPose head = turning(i, 30.0);
+            same += shared_level.render(head, 0.0, static_cast<std::uint32_t>(i)).left.pixels ==
+                    copying_level.render(head, 0.0, static_cast<std::uint32_t>(i)).left.pixels;
+        }
+        return same;
+    };
+    ASSERT_TRUE(b.executor().take_history(a.executor()));
+    ASSERT_TRUE(copying_b.executor().take_history(copying_a.executor()));
+    EXPECT_EQ(same_frames(b, copying_b, 15, 19), 4) << "down a level: the shared history is the copied one";
+    ASSERT_TRUE(a.executor().take_history(b.executor()));
+    ASSERT_TRUE(copying_a.executor().take_history(copying_b.executor()));
+    EXPECT_EQ(same_frames(a, copying_a, 19, 22), 3) << "and back up";
 }
