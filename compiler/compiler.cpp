@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <filesystem>
 #include <future>
 #include <thread>
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "analysis/precision_advice.h"
 #include "analysis/specialization.h"
 #include "codegen/scene_codegen.h"
+#include "import/environment_exr.h"
 #include "common/spec_constants.h"
 #include "graph/graph_loader.h"
 #include "ir/ir_builder.h"
@@ -175,6 +177,16 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
                                                 ir->scene.step_fraction));
     m.period = analyse_periodicity(*ir).period;
     m.scene = ir->scene;
+    if (ir->scene.environment && !ir->scene.environment->image.empty()) {
+        const std::string& name = ir->scene.environment->image;
+        const std::string path = options.folder.empty() ? name : (std::filesystem::path(options.folder) / name).string();
+        std::string why;
+        result.environment = read_environment_exr(path, why);
+        if (!result.environment) {
+            diag.error(fmt::format("scene.environment.image: cannot use '{}': {}", path, why), "/scene/environment/image");
+            return std::nullopt;
+        }
+    }
     m.precision = ir->scene.double_precision ? "double" : "float";
     if (const auto d = ir->outputs.find("distance"); d != ir->outputs.end())
         m.animated = (d->second.kind == IrInput::Kind::Implicit && d->second.implicit == ImplicitSource::Time) ||
@@ -257,6 +269,7 @@ std::vector<std::uint8_t> pack_bytes(const CompileResult& result) {
     for (const auto& p : result.passes) maps[p.source.name] = p.source.source_map.to_json();
     w.add(std::make_unique<TextChunk>(kTagSourceMap, "", maps.dump()));
     for (const auto& p : result.passes) w.add(std::make_unique<SpirvChunk>(p.source.name, p.spirv));
+    if (result.environment) w.add(std::make_unique<EnvironmentChunk>(*result.environment));
     if (result.include_glsl)
         for (const auto& p : result.passes) w.add(std::make_unique<TextChunk>(kTagGlsl, p.source.name, p.source.glsl));
     return w.bytes();

@@ -17,6 +17,7 @@
 #include "graph/node_library.h"
 #include "ir/constant_folding.h"
 #include "ir/ir_graph.h"
+#include "pack/environment_image.h"
 #include "pack/manifest.h"
 #include "spirv/pass_cache.h"
 
@@ -33,6 +34,9 @@ struct CompileOptions {
     std::vector<std::string> only_passes;
     // Passes compiled before, reused where their GLSL is unchanged (and new ones stored); may be null.
     PassCache* cache = nullptr;
+    // The folder the graph's files (scene.environment.image) are named relative to; empty: the
+    // current one.
+    std::string folder;
 };
 
 struct CompiledPass {
@@ -57,6 +61,7 @@ struct CompileResult {
     std::vector<CompiledPass> passes;
     StageTimes times;
     bool include_glsl = false;
+    std::optional<EnvironmentImage> environment;   // scene.environment's image, read from its file
 };
 
 // Front half only: graph -> IR -> analyses. Enough for `fgc check` without a GPU toolchain step.

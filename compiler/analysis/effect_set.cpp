@@ -37,6 +37,7 @@ EffectSet find_effects(const IrGraph& ir) {
     if (s.foveation) e.add(Effect::Foveation);
     if (s.has_background_gradient()) e.add(Effect::BackgroundGradient);
     if (!s.light.auxiliary.empty()) e.add(Effect::Lights);
+    if (s.environment) e.add(Effect::Environment), e.add(Effect::Normals);
     return e;
 }
 

@@ -72,7 +72,7 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
     SceneReader r(diag);
     const json& j = *jp;
     if (!r.is_object(j, ptr)) return s;
-    r.unknown_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "vignette", "foveation", "bounds",
+    r.unknown_keys(j, ptr, {"camera", "light", "albedo", "background", "fog", "glow", "environment", "vignette", "foveation", "bounds",
                             "max_distance", "exposure", "scale", "locomotion", "step_factor", "step_fraction", "precision"},
                    "scene setting");
     if (const json* c = r.block(j, "camera", ptr, {"position", "target", "up", "fov_deg"})) {
@@ -124,6 +124,15 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
         r.optional(*g, "intensity", p, glow.intensity, NumberRange{0.0, 1e4});
         r.optional(*g, "falloff", p, glow.falloff, NumberRange{1e-9, 1e6});
         s.glow = glow;
+    }
+    if (const json* e = r.block(j, "environment", ptr, {"image", "color", "intensity", "rotation_deg"})) {
+        std::string p = ptr + "/environment";
+        SceneSettings::Environment env;
+        r.optional(*e, "image", p, env.image);
+        r.vector(*e, "color", p, env.color, kColour);
+        r.optional(*e, "intensity", p, env.intensity, NumberRange{0.0, 1e6});
+        r.optional(*e, "rotation_deg", p, env.rotation_deg, NumberRange{-360.0, 360.0});
+        s.environment = env;
     }
     if (const json* v = r.block(j, "vignette", ptr, {"strength"})) {
         SceneSettings::Vignette vignette;
@@ -181,6 +190,11 @@ json scene_settings_to_json(const SceneSettings& s) {
     j["background"] = {{"top", v(s.background.top)}, {"bottom", v(s.background.bottom)}};
     if (s.fog) j["fog"] = {{"color", v(s.fog->color)}, {"density", s.fog->density}};
     if (s.glow) j["glow"] = {{"color", v(s.glow->color)}, {"intensity", s.glow->intensity}, {"falloff", s.glow->falloff}};
+    if (s.environment) {
+        const auto& e = *s.environment;
+        j["environment"] = {{"color", v(e.color)}, {"intensity", e.intensity}, {"rotation_deg", e.rotation_deg}};
+        if (!e.image.empty()) j["environment"]["image"] = e.image;
+    }
     if (s.vignette) j["vignette"] = {{"strength", s.vignette->strength}};
     if (s.foveation) j["foveation"] = {{"inner_radius", s.foveation->inner_radius}, {"blend", s.foveation->blend}};
     j["bounds"] = {{"center", v(s.bounds_center)}, {"radius", s.bounds_radius}};

@@ -72,6 +72,16 @@ struct SceneSettings {
         bool operator==(const Glow&) const = default;
     };
     std::optional<Glow> glow;
+    // Light from all around: a lat-long (equirectangular) HDR image, or a uniform sky of `color`.
+    // It is seen where rays miss and in reflections, and lights the surface diffusely.
+    struct Environment {
+        std::string image;                            // an OpenEXR file, relative to the graph's folder
+        glm::dvec3 color{1.0, 1.0, 1.0};              // the image's tint, or the uniform sky's radiance
+        double intensity = 1.0;
+        double rotation_deg = 0.0;                    // turns the image about +y, counter-clockwise from above
+        bool operator==(const Environment&) const = default;
+    };
+    std::optional<Environment> environment;
     struct Vignette {
         double strength = 0.4;
         bool operator==(const Vignette&) const = default;

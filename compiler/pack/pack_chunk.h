@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "chunk_tags.h"
+#include "environment_image.h"
 
 namespace fg {
 
@@ -56,6 +57,17 @@ private:
     ChunkTag tag_;
     std::string name_;
     std::string text_;
+};
+
+// The environment's image (environment_image.h).
+class EnvironmentChunk final : public PackChunk {
+public:
+    explicit EnvironmentChunk(const EnvironmentImage& image) : image_(image) {}
+    ChunkTag tag() const override { return kTagEnvironment; }
+    std::vector<std::uint8_t> payload() const override { return environment_payload(image_); }
+
+private:
+    const EnvironmentImage& image_;
 };
 
 }  // namespace fg

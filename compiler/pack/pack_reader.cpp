@@ -164,7 +164,8 @@ private:
         bool have_graph = false;
         for (const auto& [info, payload] : chunks) {
             std::string tag = tag_text(info.tag);
-            bool unique_kind = info.tag == kTagManifest || info.tag == kTagGraph || info.tag == kTagSourceMap;
+            bool unique_kind = info.tag == kTagManifest || info.tag == kTagGraph || info.tag == kTagSourceMap ||
+                               info.tag == kTagEnvironment;
             if (unique_kind && !info.name.empty()) {
                 fail(info.offset, fmt::format("chunk '{}' has a name ('{}'); a pack has one unnamed {} chunk", tag,
                                               info.name, tag));
@@ -199,6 +200,13 @@ private:
                 pack_.source_map = std::move(*map);
             } else if (info.tag == kTagGlsl) {
                 pack_.glsl[info.name] = text;
+            } else if (info.tag == kTagEnvironment) {
+                std::string why;
+                pack_.environment = environment_from_payload(payload, why);
+                if (!pack_.environment) {
+                    fail(info.offset, why);
+                    return std::nullopt;
+                }
             } else if (pack_.version_minor <= kPackVersionMinor) {
                 fail(info.offset, fmt::format("unknown chunk tag '{}' in a {}.{} pack", tag, pack_.version_major,
                                               pack_.version_minor));
@@ -251,6 +259,12 @@ private:
             }
         if (fmt::format("{:016x}", XXH64(pack_.graph.data(), pack_.graph.size(), 0)) != pack_.manifest.graph_hash) {
             fail(manifest_chunk->offset, "the manifest's graph hash does not match the source graph chunk");
+            consistent = false;
+        }
+        const auto& env = pack_.manifest.scene.environment;
+        if (env && !env->image.empty() && !pack_.environment) {
+            fail(manifest_chunk->offset, fmt::format("the scene's environment is the image '{}', but the pack has no "
+                                                     "environment chunk (ENVI)", env->image));
             consistent = false;
         }
         if (!consistent) return std::nullopt;

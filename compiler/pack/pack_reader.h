@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "chunk_tags.h"
+#include "environment_image.h"
 #include "common/diagnostics.h"
 #include "manifest.h"
 
@@ -34,6 +35,7 @@ struct Pack {
     std::string graph;                                         // source graph JSON text
     nlohmann::json source_map;
     std::map<std::string, std::string> glsl;                   // pass name -> debug GLSL (optional)
+    std::optional<EnvironmentImage> environment;               // scene.environment's image, if it has one
     std::vector<PackChunkInfo> chunks;
 };
 

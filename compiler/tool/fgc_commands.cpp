@@ -87,6 +87,7 @@ int check(const Common& c, const std::string& graph) {
     PassCache cache(64, user_pass_cache_folder());
     CompileOptions options;
     options.cache = &cache;
+    options.folder = std::filesystem::path(graph).parent_path().string();
     auto result = compile_graph(*text, lib, options, diag);
     int rc = report(diag, graph);
     if (rc == 0 && result && !c.quiet) {
@@ -106,6 +107,7 @@ int compile(const Common& c, const std::string& graph, const std::string& output
     PassCache cache(64, user_pass_cache_folder());   // passes an earlier run compiled are read from disk
     CompileOptions options;
     options.cache = &cache;
+    options.folder = std::filesystem::path(graph).parent_path().string();
     options.include_glsl = include_glsl;
     options.optimize = optimize;
     if (!precision.empty()) options.double_precision = precision == "double";

@@ -1,5 +1,6 @@
 #include "desktop/pack_source.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -37,6 +38,7 @@ PackSource::Outcome PackSource::build() const {
         text << in.rdbuf();
         CompileOptions options;
         options.cache = pass_cache_.get();
+        options.folder = std::filesystem::path(path_).parent_path().string();
         auto result = compile_graph(text.str(), NodeLibrary::builtin(), options, diag);
         if (!result) {
             out.error = diag.format(path_);

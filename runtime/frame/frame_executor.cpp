@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/spec_constants.h"
+#include "environment_light.h"
 #include "persistent_groups.h"
 #include "sample_jitter.h"
 #include "vk/commands.h"
@@ -76,6 +77,7 @@ const char* standard_resource(const std::string& binding) {
     if (binding == "FgParams") return "params";
     if (binding == "FgCounters") return "counters";
     if (binding == "FgTiles") return "no_tiles";
+    if (binding == "FgEnvironment") return "environment";
     return nullptr;
 }
 
@@ -142,6 +144,12 @@ FrameExecutor::FrameExecutor(const vk::Context& ctx, const Pack& pack, FrameGrap
     make_programs(pack, pipelines);
     check_declarations();
     make_resources(taa_history);
+    if (manifest_.effects.has(Effect::Environment)) {
+        const auto words = environment_words(pack.environment ? *pack.environment : uniform_environment());
+        environment_ = std::make_unique<vk::Buffer>(ctx_, words.size() * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                                    vk::MemoryKind::DeviceLocal);
+        environment_->upload(words);
+    }
     make_descriptor_sets();
 }
 
@@ -283,6 +291,7 @@ vk::Buffer* FrameExecutor::resolve_buffer(const std::string& name) const {
     if (name == "params") return params_.get();
     if (name == "counters") return counters_.get();
     if (name == "no_tiles") return no_tiles_.get();
+    if (name == "environment") return environment_.get();
     auto it = buffers_.find(name);
     return it == buffers_.end() ? nullptr : it->second.get();
 }

@@ -169,6 +169,7 @@ private:
     std::array<std::optional<SampledTiles>, 3> sampled_tiles_;   // by view
     std::uint64_t sampled_version_ = 0;            // counts set_sampled_tiles
     std::unique_ptr<vk::Buffer> no_tiles_;         // bound where a pass dispatches no tiles
+    std::unique_ptr<vk::Buffer> environment_;      // environment_light.h, where the pack has one
 };
 
 // The specialization constants of a pack with overrides applied: the manifest's values, then

@@ -89,6 +89,9 @@ GpuScene make_gpu_scene(const SceneSettings& s) {
         g.auxiliary_light[i] = light.position ? glm::vec4(v3(*light.position), 1.0f) : glm::vec4(v3(light.direction), 0.0f);
         g.auxiliary_color[i] = v4(light.color);
     }
+    if (s.environment)
+        g.environment = glm::vec4(v3(s.environment->color * s.environment->intensity),
+                                  static_cast<float>(glm::radians(s.environment->rotation_deg)));
     return g;
 }
 

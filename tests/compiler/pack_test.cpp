@@ -1,6 +1,7 @@
 // The .fgpack format (docs/pack-format.md): what the compiler writes reads back unchanged, and the
 // reader refuses anything it cannot trust, naming the byte offset.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cstdint>
@@ -166,6 +167,7 @@ Bytes rewrite(const Pack& pack) {
         else if (c.tag == kTagSourceMap) w.add(std::make_unique<TextChunk>(kTagSourceMap, "", pack.source_map.dump()));
         else if (c.tag == kTagSpirv) w.add(std::make_unique<SpirvChunk>(c.name, pack.spirv.at(c.name)));
         else if (c.tag == kTagGlsl) w.add(std::make_unique<TextChunk>(kTagGlsl, c.name, pack.glsl.at(c.name)));
+        else if (c.tag == kTagEnvironment) w.add(std::make_unique<EnvironmentChunk>(*pack.environment));
         else ADD_FAILURE() << "unexpected chunk " << tag_text(c.tag);
     }
     return w.bytes();
@@ -453,6 +455,35 @@ TEST(Pack, a_manifest_whose_graph_hash_does_not_match_the_grph_chunk_is_refused)
     EXPECT_TRUE(has_error(r, "graph hash does not match"));
 }
 
+TEST(Pack, an_environment_image_reads_back_and_a_scene_that_names_one_needs_it) {
+    auto m = tiny_manifest();
+    m.scene.environment = SceneSettings::Environment{};
+    m.scene.environment->image = "sky.exr";
+    auto r = read_expecting_refusal(make_pack(manifest_to_json(m), kTinyGraph, {"main"}));
+    EXPECT_TRUE(has_error(r, "the scene's environment is the image 'sky.exr', but the pack has no environment chunk (ENVI)",
+                          pack_format::kHeaderSize))
+        << r.text();
+
+    EnvironmentImage sky{2, 1, {1, 2, 3, 4, 5, 6, 7, 0xffff}};
+    PackWriter w;
+    w.add(std::make_unique<ManifestChunk>(manifest_to_json(m)));
+    w.add(std::make_unique<TextChunk>(kTagGraph, "", kTinyGraph));
+    w.add(std::make_unique<SpirvChunk>("main", tiny_spirv()));
+    w.add(std::make_unique<EnvironmentChunk>(sky));
+    auto pack = read_ok(w.bytes());
+    ASSERT_TRUE(pack);
+    ASSERT_TRUE(pack->environment);
+    EXPECT_EQ(*pack->environment, sky);
+
+    EnvironmentImage short_of_texels{3, 1, {1, 2, 3, 4}};
+    PackWriter bad;
+    bad.add(std::make_unique<ManifestChunk>(manifest_to_json(m)));
+    bad.add(std::make_unique<TextChunk>(kTagGraph, "", kTinyGraph));
+    bad.add(std::make_unique<SpirvChunk>("main", tiny_spirv()));
+    bad.add(std::make_unique<EnvironmentChunk>(short_of_texels));
+    EXPECT_TRUE(has_error(read_expecting_refusal(bad.bytes()), "the environment chunk holds 16 bytes; a 3x1 image needs 32"));
+}
+
 TEST(Pack, a_pack_without_a_manifest_is_refused) {
     PackWriter w;
     w.add(std::make_unique<TextChunk>(kTagGraph, "", kTinyGraph));
@@ -542,7 +573,7 @@ TEST(Pack, a_pass_listing_an_unknown_dispatch_constant_is_refused_and_one_withou
     EXPECT_TRUE(pointer) << r.text();
 }
 
-TEST(Pack, an_unknown_chunk_tag_in_a_1_0_pack_is_refused_but_skipped_in_a_newer_minor_version) {
+TEST(Pack, an_unknown_chunk_tag_in_a_pack_of_this_version_is_refused_but_skipped_in_a_newer_minor_version) {
     PackWriter w;
     w.add(std::make_unique<ManifestChunk>(manifest_to_json(tiny_manifest())));
     w.add(std::make_unique<TextChunk>(kTagGraph, "", kTinyGraph));
@@ -550,14 +581,17 @@ TEST(Pack, an_unknown_chunk_tag_in_a_1_0_pack_is_refused_but_skipped_in_a_newer_
     w.add(std::make_unique<SpirvChunk>("main", tiny_spirv()));
     Bytes bytes = w.bytes();
     ASSERT_EQ(get_le(bytes, 4, 2), 1u);
-    ASSERT_EQ(get_le(bytes, 6, 2), 0u);
+    ASSERT_EQ(get_le(bytes, 6, 2), kPackVersionMinor);
 
     auto r = read_expecting_refusal(bytes);
     // The XTRA chunk follows MANI and GRPH (neither has a name).
     std::uint64_t per_chunk = pack_format::kChunkHeaderSize + pack_format::kChecksumSize;
     std::uint64_t xtra_at = pack_format::kHeaderSize + per_chunk + manifest_to_json(tiny_manifest()).dump(2).size() +
                             per_chunk + kTinyGraph.size();
-    EXPECT_TRUE(has_error(r, "unknown chunk tag 'XTRA' in a 1.0 pack", xtra_at)) << r.text();
+    EXPECT_TRUE(has_error(r, fmt::format("unknown chunk tag 'XTRA' in a 1.{} pack", kPackVersionMinor), xtra_at)) << r.text();
+
+    set_version(bytes, kPackVersionMajor, 0);   // an older pack: its unknown tags are damage too
+    EXPECT_TRUE(has_error(read_expecting_refusal(bytes), "unknown chunk tag 'XTRA' in a 1.0 pack", xtra_at));
 
     set_version(bytes, kPackVersionMajor, kPackVersionMinor + 1);
     auto pack = read_ok(bytes);

@@ -138,3 +138,28 @@ TEST(SceneSettings, each_parse_is_counted) {
 }
 
 }  // namespace
+
+TEST(SceneSettings, an_environment_is_a_uniform_sky_or_an_image_that_must_exist) {
+    auto g = minimal_graph();
+    g["scene"]["light"] = {{"direction", {0, 1, 0}}};
+    g["scene"]["environment"] = {{"color", {0.5, 0.6, 0.7}}, {"intensity", 2.0}, {"rotation_deg", 30.0}};
+    fg::Diagnostics diag;
+    auto r = fg::test::compile_text(g.dump(), diag);
+    ASSERT_TRUE(r) << diag.format();
+    EXPECT_TRUE(r->manifest.effects.has(fg::Effect::Environment));
+    EXPECT_FALSE(r->environment) << "a uniform sky carries no image";
+    ASSERT_TRUE(r->manifest.scene.environment);
+    EXPECT_EQ(r->manifest.scene.environment->rotation_deg, 30.0);
+    auto read = fg::manifest_from_json(json::parse(fg::manifest_to_json(r->manifest).dump()), diag);
+    ASSERT_TRUE(read) << diag.format();
+    EXPECT_TRUE(read->scene == r->manifest.scene);
+
+    g["scene"]["environment"] = {{"image", "no_such_sky.exr"}, {"intensty", 1.0}};
+    diag = fg::Diagnostics();
+    EXPECT_FALSE(fg::test::compile_text(g.dump(), diag));
+    EXPECT_TRUE(has_error(diag, "/scene/environment/intensty", "", "did you mean \"intensity\"?")) << diag.format();
+    g["scene"]["environment"].erase("intensty");
+    diag = fg::Diagnostics();
+    EXPECT_FALSE(fg::test::compile_text(g.dump(), diag));
+    EXPECT_TRUE(has_error(diag, "/scene/environment/image", "", "cannot use 'no_such_sky.exr'")) << diag.format();
+}

@@ -2,6 +2,7 @@
 //! needs: surface trap
 //! when: always
 //! include: post_effects.glsl
+//! include-after-scene: environment.glsl
 //! include-after-scene: shading.glsl
 // The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
 // beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse

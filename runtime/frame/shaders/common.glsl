@@ -268,9 +268,11 @@ uint fg_owen_scramble(uint x, uint seed)
     return bitfieldReverse(x);
 }
 
-vec3 fg_light_sample()
+// This sample's point of the unit square for one stochastic term (`stream`: 0 the area lights, 1
+// the environment), scrambled by a seed of the pixel's and the term's own, so that the terms'
+// points do not line up with each other.
+vec2 fg_sample_square(uint stream)
 {
-    if (fg_frame.area_light.z == 0.0) return vec3(0.0);
     // A small integer hash of the pixel (PCG-style, two rounds): the two dimensions' seeds.
     uvec2 h = uvec2(fg_shading_pixel) * 1664525u + 1013904223u;
     h.x += h.y * 1664525u;
@@ -279,10 +281,17 @@ vec3 fg_light_sample()
     h.x += h.y * 1664525u;
     h.y += h.x * 1664525u;
     h ^= h >> 16u;
+    h ^= stream * uvec2(0x9e3779b9u, 0x7f4a7c15u);
     uvec2 p = fg_sobol2(uint(fg_frame.area_light.x));
     uvec2 scrambled = uvec2(fg_owen_scramble(p.x, h.x), fg_owen_scramble(p.y, h.y));
     // The top 24 bits: a float's, so that no point rounds up to 1.
-    vec2 u = 2.0 * (vec2(scrambled >> 8u) * (1.0 / 16777216.0)) - 1.0;
+    return vec2(scrambled >> 8u) * (1.0 / 16777216.0);
+}
+
+vec3 fg_light_sample()
+{
+    if (fg_frame.area_light.z == 0.0) return vec3(0.0);
+    vec2 u = 2.0 * fg_sample_square(0u) - 1.0;
     if (u.x == 0.0 && u.y == 0.0) return vec3(0.0, 0.0, 1.0);
     // Shirley and Chiu's concentric map of the square onto the disc keeps the points evenly spread.
     const float quarter = 0.785398163;

@@ -126,6 +126,9 @@ struct GpuScene {
     // scene unit away) or the unit direction towards it (w 0); its colour.
     vec4 auxiliary_light[4];
     vec4 auxiliary_color[4];
+    // The environment (FG_HAS_ENVIRONMENT): rgb its colour times intensity, w its turn about +y
+    // (radians, counter-clockwise from above).
+    vec4 environment;
 };
 
 // Push constants, one struct per pass. `stride` is 1 for a full-resolution dispatch, 2 for the
@@ -194,6 +197,6 @@ static_assert(offsetof(GpuFrame, anchor_hi) == 352 && offsetof(GpuFrame, previou
 static_assert(offsetof(GpuFrame, reuse) == 576 && offsetof(GpuFrame, jitter) == 592 && sizeof(GpuFrame) == 624);
 static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
 static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
-static_assert(offsetof(GpuScene, exposure) == 192 && offsetof(GpuScene, auxiliary_light) == 208 && sizeof(GpuScene) == 336);
+static_assert(offsetof(GpuScene, exposure) == 192 && offsetof(GpuScene, auxiliary_light) == 208 && sizeof(GpuScene) == 352);
 }  // namespace fg
 #endif

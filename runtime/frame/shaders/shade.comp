@@ -3,6 +3,7 @@
 //! when: always
 //! include: post_effects.glsl
 //! include: dispatch_tiles.glsl
+//! include-after-scene: environment.glsl
 //! include-after-scene: shading.glsl
 //! include-after-scene: kept_shading.glsl
 // Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a

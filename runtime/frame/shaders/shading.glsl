@@ -4,7 +4,9 @@
 
 vec3 fg_background(vec3 rd)
 {
-#ifdef FG_HAS_BACKGROUND_GRADIENT
+#ifdef FG_HAS_ENVIRONMENT
+    return fg_environment_radiance(rd);
+#elif defined(FG_HAS_BACKGROUND_GRADIENT)
     return mix(fg_scene.bg_bottom.rgb, fg_scene.bg_top.rgb, clamp(0.5 + 0.5 * rd.y, 0.0, 1.0));
 #else
     return fg_scene.bg_top.rgb;
@@ -78,9 +80,64 @@ vec3 fg_auxiliary_light(uint i, vec3 p, vec3 rd, vec3 n, vec3 albedo)
 }
 #endif
 
-// Shades the hit p seen along rd with normal n by its direct terms: the graph's surface outputs,
-// the lights, fake lighting, emission; no mirror bounce.
-FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n)
+#if defined(FG_HAS_REFLECTION) || defined(FG_HAS_ENVIRONMENT)
+// A ray from the hit p, t along the eye's ray, with normal n, leaving along dir: true, with the
+// point it meets and its distance from the eye's origin, where it meets the surface by the same
+// rule as the eye's rays (the pixel's cone grown over the whole path).
+bool fg_march_from_hit(vec3 p, vec3 n, vec3 dir, float t, out vec3 q, out float total)
+{
+    float footprint = FG_EPSILON * fg_detail_tan();
+    vec3 origin = p + n * (2.0 * footprint * t + 1e-6 * fg_frame.world_scale);
+    vec2 range = fg_bounds_interval(origin, dir, 0.0);
+    float along = max(range.x, 0.0);
+    for (int i = 0; i < FG_MAX_STEPS && along <= range.y; i++) {
+        q = origin + dir * along;
+        total = t + along;
+        float d = fg_scene_distance(q) * FG_STEP_SCALE;
+        if (d < footprint * FG_STEP_FRACTION * total) return true;
+        along += d;
+    }
+    return false;
+}
+#endif
+
+#ifdef FG_HAS_ENVIRONMENT
+// What the environment reflects off a white diffuse surface at the hit p (t along the eye's ray)
+// with normal n. In a frame: its irradiance over pi, occluded by the graph's ao. While samples
+// accumulate: one direction a sample, drawn half the time by the image's brightness and half the
+// time by the cosine, weighted by both densities (one-sample multiple importance sampling, Veach
+// 1997), and shadowed by marching the fractal towards it; their mean converges to the integral.
+vec3 fg_environment_light(vec3 p, vec3 n, float t, float ao)
+{
+    if (fg_frame.area_light.z == 0.0) return fg_environment_irradiance(n) * ao;
+    vec2 xi = fg_sample_square(1u);
+    vec3 dir;
+    if (xi.x < 0.5) {
+        dir = fg_environment_sample(vec2(2.0 * xi.x, xi.y));
+    } else {
+        // Cosine-weighted about n (Malley): a disc point lifted onto the hemisphere, in a frame about
+        // the normal without a branch on its direction (Duff et al. 2017).
+        float side = n.z >= 0.0 ? 1.0 : -1.0;
+        float a = -1.0 / (side + n.z);
+        float b = n.x * n.y * a;
+        vec3 tangent = vec3(1.0 + side * n.x * n.x * a, side * b, -side * n.x);
+        vec3 bitangent = vec3(b, side + n.y * n.y * a, -n.y);
+        float r = sqrt(2.0 * xi.x - 1.0), phi = 2.0 * FG_PI * xi.y;
+        dir = tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + n * sqrt(max(2.0 - 2.0 * xi.x, 0.0));
+    }
+    float cosine = dot(n, dir);
+    if (cosine <= 0.0) return vec3(0.0);
+    vec3 q;
+    float total;
+    if (fg_march_from_hit(p, n, dir, t, q, total)) return vec3(0.0);
+    float pdf = 0.5 * fg_environment_pdf(dir) + 0.5 * cosine / FG_PI;
+    return fg_environment_radiance(dir) * (cosine / FG_PI / pdf);
+}
+#endif
+
+// Shades the hit p, t along rd, with normal n by its direct terms: the graph's surface outputs,
+// the lights, the environment, fake lighting, emission; no mirror bounce.
+FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n, float t)
 {
     FgSurface s = fg_scene_surface(p, -rd, n);
 #ifdef FG_OUT_DIFFUSE
@@ -112,6 +169,9 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n)
 #ifdef FG_HAS_LIGHTS
     for (uint i = 0u; i < fg_scene.auxiliary_lights; i++) color += fg_auxiliary_light(i, p, rd, n, s.albedo);
 #endif
+#ifdef FG_HAS_ENVIRONMENT
+    color += s.albedo * fg_environment_light(p, n, t, ao);
+#endif
 #ifdef FG_HAS_SSS
     color += s.sss * fg_scene.sss_color.rgb * s.albedo;
 #endif
@@ -131,16 +191,9 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n)
 vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
 {
     vec3 dir = reflect(rd, n);
-    float footprint = FG_EPSILON * fg_detail_tan();
-    vec3 origin = p + n * (2.0 * footprint * t + 1e-6 * fg_frame.world_scale);
-    vec2 range = fg_bounds_interval(origin, dir, 0.0);
-    float along = max(range.x, 0.0);
-    for (int i = 0; i < FG_MAX_STEPS && along <= range.y; i++) {
-        vec3 q = origin + dir * along;
-        float d = fg_scene_distance(q) * FG_STEP_SCALE;
-        if (d < footprint * FG_STEP_FRACTION * (t + along)) return fg_shade_direct(q, dir, fg_surface_normal(q, t + along)).color;
-        along += d;
-    }
+    vec3 q;
+    float total;
+    if (fg_march_from_hit(p, n, dir, t, q, total)) return fg_shade_direct(q, dir, fg_surface_normal(q, total), total).color;
     return fg_background(dir);
 }
 #endif
@@ -149,7 +202,7 @@ vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
 // mirror bounce weighted by its reflectance.
 FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n, float t)
 {
-    FgShading s = fg_shade_direct(p, rd, n);
+    FgShading s = fg_shade_direct(p, rd, n, t);
 #ifdef FG_HAS_REFLECTION
     s.reflected = s.surface.reflection * fg_reflected_light(p, rd, n, t);
     s.color += s.reflected;

@@ -1,0 +1,115 @@
+// The environment (scene.environment): a lat-long HDR image around the scene, or a uniform sky, as
+// the runtime lays it out in one buffer (frame/environment_light.h). It is seen where rays miss and
+// in reflections; it lights the surface diffusely, by its irradiance in spherical harmonics in a
+// frame, and by directions drawn in proportion to its brightness while samples accumulate.
+#ifdef FG_HAS_ENVIRONMENT
+layout(set = 0, binding = 17, std430) readonly buffer FgEnvironment { uint fg_env[]; };
+
+const uint FG_ENV_HARMONICS = 4u;
+const uint FG_ENV_TABLES = 40u;
+
+uint fg_env_width() { return fg_env[0]; }
+uint fg_env_height() { return fg_env[1]; }
+float fg_env_float(uint at) { return uintBitsToFloat(fg_env[at]); }
+uint fg_env_row_table(uint row) { return FG_ENV_TABLES + fg_env_height() + 1u + row * (fg_env_width() + 1u); }
+uint fg_env_texels() { return fg_env_row_table(fg_env_height()); }
+
+// A world direction in the image's frame, and back: the image turns about +y by environment.w.
+vec3 fg_env_local(vec3 d)
+{
+    float c = cos(fg_scene.environment.w), s = sin(fg_scene.environment.w);
+    return vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
+}
+vec3 fg_env_world(vec3 l)
+{
+    float c = cos(fg_scene.environment.w), s = sin(fg_scene.environment.w);
+    return vec3(c * l.x + s * l.z, l.y, -s * l.x + c * l.z);
+}
+
+// The image's point (u, v) of a direction in its frame: v = 0 straight up, u = 0.5 looking down -z,
+// growing towards +x (fgplay's equirectangular panoramas).
+vec2 fg_env_uv(vec3 l)
+{
+    return vec2(0.5 + atan(l.x, -l.z) * (0.5 / FG_PI), acos(clamp(l.y, -1.0, 1.0)) * (1.0 / FG_PI));
+}
+
+vec3 fg_env_texel(uint i, uint j)
+{
+    uint at = fg_env_texels() + 2u * (j * fg_env_width() + i);
+    return vec3(unpackHalf2x16(fg_env[at]), unpackHalf2x16(fg_env[at + 1u]).x);
+}
+
+// The radiance arriving from world direction d: the image filtered bilinearly (wrapping around,
+// clamped at the poles), times the scene's colour and intensity.
+vec3 fg_environment_radiance(vec3 d)
+{
+    vec2 uv = fg_env_uv(fg_env_local(d));
+    uint w = fg_env_width(), h = fg_env_height();
+    vec2 at = uv * vec2(w, h) - 0.5;
+    vec2 base = floor(at), f = at - base;
+    uint i0 = uint(int(base.x) + int(w)) % w, i1 = (i0 + 1u) % w;
+    uint j0 = uint(clamp(int(base.y), 0, int(h) - 1)), j1 = uint(clamp(int(base.y) + 1, 0, int(h) - 1));
+    vec3 top = mix(fg_env_texel(i0, j0), fg_env_texel(i1, j0), f.x);
+    vec3 bottom = mix(fg_env_texel(i0, j1), fg_env_texel(i1, j1), f.x);
+    return fg_scene.environment.rgb * mix(top, bottom, f.y);
+}
+
+// What a white diffuse surface facing n reflects of the environment, unshadowed: its irradiance
+// over pi, from the nine harmonics.
+vec3 fg_environment_irradiance(vec3 n)
+{
+    vec3 l = fg_env_local(n);
+    float y[9] = float[9](0.282095, 0.488603 * l.y, 0.488603 * l.z, 0.488603 * l.x, 1.092548 * l.x * l.y,
+                          1.092548 * l.y * l.z, 0.315392 * (3.0 * l.z * l.z - 1.0), 1.092548 * l.x * l.z,
+                          0.546274 * (l.x * l.x - l.y * l.y));
+    vec3 e = vec3(0.0);
+    for (uint k = 0u; k < 9u; k++) {
+        uint at = FG_ENV_HARMONICS + 4u * k;
+        e += y[k] * vec3(fg_env_float(at), fg_env_float(at + 1u), fg_env_float(at + 2u));
+    }
+    return fg_scene.environment.rgb * max(e, vec3(0.0));
+}
+
+// The interval of a cumulative table (count intervals from `first`) that x falls in.
+uint fg_env_search(uint first, uint count, float x)
+{
+    uint lo = 0u, hi = count - 1u;
+    while (lo < hi) {
+        uint mid = (lo + hi + 1u) / 2u;
+        if (fg_env_float(first + mid) <= x) lo = mid;
+        else hi = mid - 1u;
+    }
+    return lo;
+}
+
+// The density, per unit solid angle, with which fg_environment_sample draws world direction d: its
+// texel's share of the brightness over the texel's solid angle at d.
+float fg_environment_pdf(vec3 d)
+{
+    vec3 l = fg_env_local(d);
+    vec2 uv = fg_env_uv(l);
+    uint w = fg_env_width(), h = fg_env_height();
+    uint i = min(uint(uv.x * float(w)), w - 1u), j = min(uint(uv.y * float(h)), h - 1u);
+    float row = fg_env_float(FG_ENV_TABLES + j + 1u) - fg_env_float(FG_ENV_TABLES + j);
+    uint table = fg_env_row_table(j);
+    float column = fg_env_float(table + i + 1u) - fg_env_float(table + i);
+    float sin_theta = max(sqrt(max(1.0 - l.y * l.y, 0.0)), 1e-6);
+    return row * column * float(w * h) / (2.0 * FG_PI * FG_PI * sin_theta);
+}
+
+// A world direction drawn in proportion to the image's brightness times sin(theta), from xi in
+// [0, 1)^2: a row by the rows' table, a column by the row's, uniformly within the texel.
+vec3 fg_environment_sample(vec2 xi)
+{
+    uint w = fg_env_width(), h = fg_env_height();
+    uint j = fg_env_search(FG_ENV_TABLES, h, xi.y);
+    float r0 = fg_env_float(FG_ENV_TABLES + j), r1 = fg_env_float(FG_ENV_TABLES + j + 1u);
+    float v = (float(j) + clamp((xi.y - r0) / max(r1 - r0, 1e-30), 0.0, 1.0)) / float(h);
+    uint table = fg_env_row_table(j);
+    uint i = fg_env_search(table, w, xi.x);
+    float c0 = fg_env_float(table + i), c1 = fg_env_float(table + i + 1u);
+    float u = (float(i) + clamp((xi.x - c0) / max(c1 - c0, 1e-30), 0.0, 1.0)) / float(w);
+    float theta = v * FG_PI, phi = (u - 0.5) * 2.0 * FG_PI;
+    return fg_env_world(vec3(sin(theta) * sin(phi), cos(theta), -sin(theta) * cos(phi)));
+}
+#endif

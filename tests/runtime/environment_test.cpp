@@ -1,0 +1,195 @@
+// Environment light (scene.environment) against closed-form answers, on real frames (the beauty
+// AOV, linear): a white diffuse sphere inside a uniform sky returns its albedo (the furnace test),
+// in a frame and as the mean of samples; a sky lit only within 60 degrees of the zenith lights a
+// plane by the analytic integral, sampled, and by the order-2 harmonics' own closed form in a frame;
+// the background shows the image where a panorama of fgplay's would put it, turned as asked.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+#include <fmt/format.h>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include "frame/aov_images.h"
+#include "offline/jittered_samples.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::RuntimeTest;
+
+namespace {
+
+constexpr std::uint32_t kSize = 96;
+constexpr double kPi = std::numbers::pi;
+
+std::size_t aov_index(const std::string& name) {
+    for (std::size_t i = 0; i < aov_images().size(); ++i)
+        if (aov_images()[i].name == name) return i;
+    throw std::logic_error("no AOV image " + name);
+}
+
+// Channel c of pixel i of the left eye's HDR beauty, and its hit distance (not finite: a miss).
+double beauty(const RenderedFrame& f, std::size_t i, int c) {
+    Imath::half h;
+    std::memcpy(&h, f.aovs_left[aov_index("beauty")].data() + (4 * i + c) * sizeof h, sizeof h);
+    return static_cast<double>(h);
+}
+bool hit(const RenderedFrame& f, std::size_t i) {
+    float w;
+    std::memcpy(&w, f.aovs_left[aov_index("position")].data() + (4 * i + 3) * sizeof w, sizeof w);
+    return std::isfinite(w);
+}
+
+// A lat-long OpenEXR of width x height whose texel (column, row) is colour(u, v) at its centre.
+template <class Colour>
+std::string write_sky(const std::string& name, int width, int height, Colour colour) {
+    const auto path = std::filesystem::temp_directory_path() / fmt::format("fg_environment_{}_{}.exr", name, ::getpid());
+    Imf::Array2D<Imf::Rgba> pixels(height, width);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const glm::dvec3 c = colour((x + 0.5) / width, (y + 0.5) / height);
+            pixels[y][x] = Imf::Rgba(static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z), 1.0f);
+        }
+    Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_RGBA);
+    file.setFrameBuffer(&pixels[0][0], 1, static_cast<std::size_t>(width));
+    file.writePixels(height);
+    return path.string();
+}
+
+FrameSettings aov_frame() {
+    FrameSettings fs;
+    fs.width = fs.height = kSize;
+    fs.stereo = StereoMode::Naive;
+    fs.aovs = true;
+    return fs;
+}
+StereoSettings eye_at_camera() {
+    StereoSettings stereo{kSize, kSize};
+    stereo.ipd_m = 0.0;
+    return stereo;
+}
+
+// One body (`distance` and its nodes) lit by the environment alone, albedo 0.8.
+Pack lit_by_sky(const std::string& nodes, const std::string& distance, const std::string& camera, const std::string& environment) {
+    return test::compile_pack(fmt::format(R"({{
+      "format": "fractograph-graph", "version": 1, "name": "lit by the sky",
+      "nodes": [{0}],
+      "outputs": {{"distance": "{1}"}},
+      "scene": {{"camera": {2}, "light": {{"color": [0, 0, 0], "ambient": [0, 0, 0]}}, "albedo": [0.8, 0.8, 0.8],
+                "environment": {3}, "bounds": {{"radius": 50}}, "max_distance": 100}}
+    }})", nodes, distance, camera, environment));
+}
+
+class Environment : public RuntimeTest {};
+
+}  // namespace
+
+TEST_F(Environment, a_white_diffuse_sphere_in_a_uniform_sky_returns_its_albedo) {
+    Pack pack = lit_by_sky(R"({"id": "ball", "type": "prim.sphere", "inputs": {"radius": 1.0}})", "ball.distance",
+                           R"({"position": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 50})",
+                           R"({"color": [1.0, 1.0, 1.0]})");
+    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
+    const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
+    double frame_worst = 0.0, sampled_sum = 0.0, sky_worst = 0.0;
+    std::size_t ball = 0;
+    for (std::size_t i = 0; i < kSize * kSize; ++i) {
+        if (!hit(frame, i)) {
+            sky_worst = std::max(sky_worst, std::abs(beauty(frame, i, 1) - 1.0));
+            continue;
+        }
+        ++ball;
+        frame_worst = std::max(frame_worst, std::abs(beauty(frame, i, 1) / 0.8 - 1.0));
+        sampled_sum += beauty(sampled, i, 1);
+    }
+    const double sampled_mean = sampled_sum / std::max<std::size_t>(ball, 1);
+    const std::string figures = fmt::format(
+        "{} pixels of the ball: a frame at most {:.3f} % from the albedo 0.8; the mean of 64 samples {:.4f} ({:+.3f} %); "
+        "the sky at most {:.4f} from 1",
+        ball, 100.0 * frame_worst, sampled_mean, 100.0 * (sampled_mean / 0.8 - 1.0), sky_worst);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    ASSERT_GT(ball, 2000u) << figures;
+    EXPECT_LT(frame_worst, 0.01) << figures;
+    EXPECT_NEAR(sampled_mean, 0.8, 0.008) << figures;
+    EXPECT_LT(sky_worst, 0.002) << figures;
+}
+
+TEST_F(Environment, a_sky_bright_near_the_zenith_lights_a_plane_as_the_integral_says) {
+    // Radiance 2 within 60 degrees of the zenith, black below: a plane facing up receives
+    // E = pi L sin^2(60), and reflects albedo E / pi. The harmonics' truncation has its own closed
+    // form: the cap's order-0, 1 and 2 coefficients, each times its share of the cosine lobe.
+    const double radiance = 2.0, cap = kPi / 3.0;
+    const std::string sky = write_sky("cap", 240, 120, [&](double, double v) { return glm::dvec3(v * kPi < cap ? radiance : 0.0); });
+    Pack pack = lit_by_sky(R"({"id": "ground", "type": "prim.plane"})", "ground.distance",
+                           R"({"position": [0, 2, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 60})",
+                           fmt::format(R"({{"image": "{}"}})", sky));
+    std::filesystem::remove(sky);
+    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
+    const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
+    double frame_sum = 0.0, sampled_sum = 0.0;
+    std::size_t plane = 0;
+    for (std::size_t i = 0; i < kSize * kSize; ++i) {
+        if (!hit(frame, i)) continue;
+        ++plane;
+        frame_sum += beauty(frame, i, 0);
+        sampled_sum += beauty(sampled, i, 0);
+    }
+    const double exact = 0.8 * radiance * std::sin(cap) * std::sin(cap);
+    const double c = std::cos(cap), s2 = std::sin(cap) * std::sin(cap);
+    const double y0 = 0.282095, y1 = 0.488603, y2 = 0.315392;
+    const double harmonics = 0.8 * radiance / kPi *
+                             (kPi * y0 * y0 * 2.0 * kPi * (1.0 - c) + 2.0 * kPi / 3.0 * y1 * y1 * kPi * s2 +
+                              kPi / 4.0 * 2.0 * y2 * y2 * 2.0 * kPi * c * s2);
+    const double frame_mean = frame_sum / std::max<std::size_t>(plane, 1), sampled_mean = sampled_sum / std::max<std::size_t>(plane, 1);
+    const std::string figures = fmt::format(
+        "{} pixels of the plane: 64 samples {:.4f} against the integral {:.4f} ({:+.3f} %); a frame {:.4f} against the "
+        "harmonics' closed form {:.4f} ({:+.3f} %), which is {:+.2f} % from the integral",
+        plane, sampled_mean, exact, 100.0 * (sampled_mean / exact - 1.0), frame_mean, harmonics,
+        100.0 * (frame_mean / harmonics - 1.0), 100.0 * (harmonics / exact - 1.0));
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    ASSERT_EQ(plane, std::size_t(kSize) * kSize) << figures;
+    EXPECT_NEAR(sampled_mean / exact, 1.0, 0.01) << figures;
+    EXPECT_NEAR(frame_mean / harmonics, 1.0, 0.005) << figures;
+}
+
+TEST_F(Environment, the_background_shows_the_image_where_a_panorama_puts_it_turned_as_asked) {
+    // Red is the image's u, green its v: each background pixel must read the (u, v) its direction
+    // maps to, u = 0.5 looking down -z and growing towards +x, v = 0 straight up; turned 90 degrees
+    // counter-clockwise from above, what was towards +x is seen down -z.
+    const std::string sky = write_sky("uv", 512, 256, [](double u, double v) { return glm::dvec3(u, v, 0.0); });
+    for (double turn : {0.0, 90.0}) {
+        // Nothing in view: one small ball behind the camera.
+        Pack pack = lit_by_sky(R"({"id": "at", "type": "xform.translate", "inputs": {"offset": [0, 0, 20]}},
+                                  {"id": "ball", "type": "prim.sphere", "inputs": {"p": "at.p", "radius": 0.1}})",
+                               "ball.distance", R"({"position": [0, 0, 0], "target": [0, 0.3, -1], "fov_deg": 80})",
+                               fmt::format(R"({{"image": "{}", "rotation_deg": {}}})", sky, turn));
+        HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+        const RenderedFrame f = r.render(r.scene_camera(), 0.0);
+        const View& view = r.views().left;
+        double worst = 0.0;
+        for (std::uint32_t y = 0; y < kSize; y += 5)
+            for (std::uint32_t x = 0; x < kSize; x += 5) {
+                const glm::dvec3 d = view.ray((x + 0.5) / kSize, (y + 0.5) / kSize);
+                const double a = glm::radians(turn);
+                const glm::dvec3 l(std::cos(a) * d.x - std::sin(a) * d.z, d.y, std::sin(a) * d.x + std::cos(a) * d.z);
+                const double u = 0.5 + std::atan2(l.x, -l.z) / (2.0 * kPi), v = std::acos(l.y) / kPi;
+                const std::size_t i = std::size_t(y) * kSize + x;
+                worst = std::max({worst, std::abs(beauty(f, i, 0) - u), std::abs(beauty(f, i, 1) - v)});
+            }
+        const std::string figures = fmt::format("turned {} degrees: the background's (u, v) at most {:.5f} from the "
+                                                "direction's (a texel is {:.5f})", turn, worst, 1.0 / 512);
+        RecordProperty(fmt::format("figures_{}", turn), figures);
+        std::printf("%s\n", figures.c_str());
+        EXPECT_LT(worst, 1.0 / 512) << figures;
+    }
+    std::filesystem::remove(sky);
+}
