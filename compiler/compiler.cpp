@@ -179,6 +179,11 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
     m.scene = ir->scene;
     if (ir->scene.environment && !ir->scene.environment->image.empty()) {
         const std::string& name = ir->scene.environment->image;
+        const std::filesystem::path named = std::filesystem::path(name).lexically_normal();
+        if (options.folder_confined && (named.is_absolute() || named.empty() || *named.begin() == "..")) {
+            diag.error(fmt::format("scene.environment.image: '{}' is outside the graph's folder", name), "/scene/environment/image");
+            return std::nullopt;
+        }
         const std::string path = options.folder.empty() ? name : (std::filesystem::path(options.folder) / name).string();
         std::string why;
         result.environment = read_environment_exr(path, why);

@@ -35,8 +35,9 @@ struct CompileOptions {
     // Passes compiled before, reused where their GLSL is unchanged (and new ones stored); may be null.
     PassCache* cache = nullptr;
     // The folder the graph's files (scene.environment.image) are named relative to; empty: the
-    // current one.
+    // current one. Confined (a server's), a file must lie inside it: no absolute path, no "..".
     std::string folder;
+    bool folder_confined = false;
 };
 
 struct CompiledPass {

@@ -52,6 +52,10 @@ std::optional<ordered_json> distance_subgraph(const ordered_json& graph, const s
     ordered_json sub = ordered_json::object();
     for (const char* key : {"format", "version", "name", "params", "scene"})
         if (graph.contains(key)) sub[key] = graph[key];
+    // A node's thumbnail is lit by a uniform sky of the environment's colour: no image file is read.
+    if (sub.contains("scene") && sub["scene"].is_object() && sub["scene"].contains("environment") &&
+        sub["scene"]["environment"].is_object())
+        sub["scene"]["environment"].erase("image");
     sub["nodes"] = ordered_json::array();
     for (const auto& n : graph["nodes"])
         if (n.is_object() && n.contains("id") && n["id"].is_string() && needed.count(n["id"].get<std::string>()))

@@ -143,6 +143,8 @@ void add_file_routes(httplib::Server& server, StudioSession& s, const std::strin
         Diagnostics diag;
         CompileOptions options;
         options.cache = &s.pass_cache();   // passes the preview compiled optimised are not compiled again
+        options.folder = s.folder().root().string();
+        options.folder_confined = true;
         auto result = compile_graph(*text, s.library(), options, diag);
         if (!result) return reply(res, 422, {{"error", "the graph does not compile"}, {"diagnostics", diagnostics_json(diag)}});
         auto bytes = pack_bytes(*result);

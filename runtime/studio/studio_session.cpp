@@ -31,6 +31,8 @@ std::optional<CompileResult> StudioSession::compile_preview(const std::string& g
     CompileOptions options;
     options.optimize = false;
     options.cache = &pass_cache_;
+    options.folder = folder_.root().string();
+    options.folder_confined = true;
     if (!every_pass) options.only_passes = preview_passes_;
     // A formula's numbers as uniforms: editing one compiles nothing.
     return compile_graph(with_body_literals_as_params(graph_text, library_), library_, options, diag);

@@ -162,4 +162,15 @@ TEST(SceneSettings, an_environment_is_a_uniform_sky_or_an_image_that_must_exist)
     diag = fg::Diagnostics();
     EXPECT_FALSE(fg::test::compile_text(g.dump(), diag));
     EXPECT_TRUE(has_error(diag, "/scene/environment/image", "", "cannot use 'no_such_sky.exr'")) << diag.format();
+
+    // A server's compile (the studio's) reads no file outside its folder.
+    fg::CompileOptions confined;
+    confined.folder = "/tmp";
+    confined.folder_confined = true;
+    for (const char* outside : {"../etc/sky.exr", "/etc/sky.exr", "a/../../sky.exr"}) {
+        g["scene"]["environment"]["image"] = outside;
+        diag = fg::Diagnostics();
+        EXPECT_FALSE(fg::compile_graph(g.dump(), fg::NodeLibrary::builtin(), confined, diag));
+        EXPECT_TRUE(has_error(diag, "/scene/environment/image", "", "is outside the graph's folder")) << outside << diag.format();
+    }
 }
