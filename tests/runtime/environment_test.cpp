@@ -193,3 +193,38 @@ TEST_F(Environment, the_background_shows_the_image_where_a_panorama_puts_it_turn
     }
     std::filesystem::remove(sky);
 }
+
+TEST_F(Environment, a_sky_split_into_halves_lights_each_side_of_a_sphere_by_its_own_half) {
+    // Green over the half of the sky towards the camera (+z), red over the other: the point of the
+    // ball facing the camera sees all green and no red, in a frame (the harmonics hold a half-space
+    // exactly at its pole) and sampled.
+    const std::string sky = write_sky("halves", 256, 128, [](double u, double) {
+        return u >= 0.25 && u < 0.75 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    });
+    Pack pack = lit_by_sky(R"({"id": "ball", "type": "prim.sphere", "inputs": {"radius": 1.0}})", "ball.distance",
+                           R"({"position": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 50})",
+                           fmt::format(R"({{"image": "{}"}})", sky));
+    std::filesystem::remove(sky);
+    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
+    const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
+    glm::dvec3 in_frame(0.0), in_samples(0.0);
+    int n = 0;
+    for (std::uint32_t y = kSize / 2 - 2; y < kSize / 2 + 2; ++y)
+        for (std::uint32_t x = kSize / 2 - 2; x < kSize / 2 + 2; ++x, ++n) {
+            const std::size_t i = std::size_t(y) * kSize + x;
+            in_frame += glm::dvec3(beauty(frame, i, 0), beauty(frame, i, 1), beauty(frame, i, 2));
+            in_samples += glm::dvec3(beauty(sampled, i, 0), beauty(sampled, i, 1), beauty(sampled, i, 2));
+        }
+    in_frame /= n;
+    in_samples /= n;
+    const std::string figures = fmt::format("the ball's centre, albedo 0.8: a frame ({:.4f}, {:.4f}), 64 samples ({:.4f}, {:.4f}) "
+                                            "in red and green; all green is (0, 0.8)",
+                                            in_frame.x, in_frame.y, in_samples.x, in_samples.y);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_NEAR(in_frame.x, 0.0, 0.01) << figures;
+    EXPECT_NEAR(in_frame.y, 0.8, 0.01) << figures;
+    EXPECT_NEAR(in_samples.x, 0.0, 0.02) << figures;
+    EXPECT_NEAR(in_samples.y, 0.8, 0.02) << figures;
+}
