@@ -205,6 +205,7 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
         g.settings.foveation = foveation ? foveation->inner_radius : 0.0;
         if (foveation) g.settings.foveation_blend = foveation->blend;
     }
+    if (g.settings.hdr) g.settings.foveation = 0.0;
     if (g.is_panorama()) {
         // The lens mask and foveation are the headset's: a panorama has neither lens nor gaze. ODS
         // moves each eye with every column, so there is no centre eye to reproject from: each view
@@ -249,6 +250,7 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     g.taa = g.settings.taa && !manifest.animated && !g.is_panorama() && manifest.precision == "float" &&
             manifest.find_pass("taa") != nullptr;
     g.settings.taa = g.taa;
+    if (g.taa) g.settings.hdr = false;
     if (!g.taa) g.settings.output_width = g.settings.output_height = 0;
     g.output_width = g.settings.shown_width();
     g.output_height = g.settings.shown_height();

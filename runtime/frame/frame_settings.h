@@ -32,6 +32,11 @@ struct FrameSettings {
     bool time_each_pass = false;                // GPU time per pass (its label), not per pass group
     // The AOV pass: the picture's terms as images for a compositor (aov.* per eye; OpenEXR output).
     bool aovs = false;
+    // The shade pass also keeps each eye's colour before the tone map (hdr.<eye>): accumulated
+    // samples average it and tone-map the mean once, so that a stochastic term (an area light, the
+    // environment) converges to the picture of its mean, not to the mean of its tone-mapped
+    // pictures. Every pixel is shaded (no foveation); not with temporal anti-aliasing.
+    bool hdr = false;
     // Fewer pixels: the lens mask skips what the headset's lens hides; fixed foveation marches and
     // shades one pixel in four beyond the fovea. Foveation < 0 takes the scene's foveation block
     // (off without one), 0 is off, > 0 is the fovea radius in half image heights.

@@ -18,6 +18,8 @@ struct RenderedFrame {
     std::vector<float> depth_left, depth_right;
     // With FrameSettings::aovs: each eye's AOV images as downloaded, in aov_images() order.
     std::vector<std::vector<std::byte>> aovs_left, aovs_right;
+    // With FrameSettings::hdr: each eye's tone map input, rgba per pixel (alpha: the fade's share kept).
+    std::vector<float> hdr_left, hdr_right;
     FrameStats stats;
 };
 

@@ -12,6 +12,7 @@ void add_shade_passes(FrameGraph& g) {
         std::string eye = view_name(view);
         g.add_image({"final." + eye, g.output_width, g.output_height, ImageFormat::RGBA8, "final image"});
         if (g.taa) g.add_image({g.shaded_image(view), g.width, g.height, ImageFormat::RGBA8, "this frame's jittered samples"});
+        if (g.settings.hdr) g.add_image({"hdr." + eye, g.width, g.height, ImageFormat::RGBA32F, "the tone map's input (samples average it)"});
         // Shading reuse: each eye keeps its shading before post effects, as terms (the colour without
         // the terms that read the view, and the albedo); the right eye reads the left eye's (shaded
         // first) where both see the same point. Without the knob each eye's "other" is its own, so the
@@ -54,7 +55,9 @@ void add_shade_passes(FrameGraph& g) {
             } else {
                 for (const char* b : {"fg_history_color", "fg_history_depth", "fg_cache_color", "fg_cache_depth"}) p.leave_unused(b);
             }
-            p.set_push(ShadePush{view, reuse ? 1 : 0, stride});
+            if (g.settings.hdr) p.bind("fg_hdr", "hdr." + eye, Access::Write);
+            else p.leave_unused("fg_hdr");
+            p.set_push(ShadePush{view, reuse ? 1 : 0, stride, g.settings.hdr ? 1 : 0});
             return p;
         });
     }

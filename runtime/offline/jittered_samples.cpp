@@ -60,8 +60,8 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<Sam
         RenderedFrame r = renderer.render(m.head, m.time, frame_index);
         const SampledTiles* l = sampled_left ? &*sampled_left : nullptr;
         const SampledTiles* rt = sampled_right ? &*sampled_right : nullptr;
-        left.add(r.left, l);
-        if (!r.right.pixels.empty()) right.add(r.right, rt);
+        left.add(r.left, l, r.hdr_left.empty() ? nullptr : &r.hdr_left);
+        if (!r.right.pixels.empty()) right.add(r.right, rt, r.hdr_right.empty() ? nullptr : &r.hdr_right);
         if (!r.aovs_left.empty()) add_samples(sums_left, r.aovs_left, l, width);
         if (!r.aovs_right.empty()) add_samples(sums_right, r.aovs_right, rt, width);
         if (k == 0) {

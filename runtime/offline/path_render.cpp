@@ -34,6 +34,7 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     f.knobs = s.knobs;
     f.count_evaluations = s.count_evaluations;
     f.aovs = needs_aovs(s.format);
+    f.hdr = s.samples > 1 && !s.taa;
     // Offline frames are for every part of the image: no lens mask, no foveation.
     f.lens_mask = false;
     f.foveation = 0.0;

@@ -4,12 +4,14 @@
 #include <limits>
 #include <stdexcept>
 
+#include "display_transform.h"
 #include "linear_light.h"
 
 namespace fg {
 
-void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sampled) {
+void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sampled, const std::vector<float>* hdr) {
     if (samples_ == 0) {
+        if (hdr) hdr_sum_.assign(static_cast<std::size_t>(sample.width) * sample.height * 4, 0.0);
         width_ = sample.width;
         height_ = sample.height;
         const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
@@ -20,6 +22,8 @@ void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sample
     } else if (sample.width != width_ || sample.height != height_) {
         throw std::invalid_argument("a sample's size differs from the first sample's");
     }
+    if ((hdr != nullptr) != !hdr_sum_.empty() || (hdr && hdr->size() != hdr_sum_.size()))
+        throw std::invalid_argument("a sample's tone map input differs from the first sample's");
     const auto& lin = srgb8_linear_table();
     for (std::uint32_t y = 0; y < height_; ++y)
         for (std::uint32_t x = 0; x < width_; ++x) {
@@ -27,6 +31,8 @@ void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sample
             const std::size_t p = static_cast<std::size_t>(y) * width_ + x;
             const std::uint8_t* c = &sample.pixels[4 * p];
             for (int k = 0; k < 3; ++k) sum_[4 * p + k] += static_cast<float>(lin[c[k]]);
+            if (hdr)
+                for (int k = 0; k < 4; ++k) hdr_sum_[4 * p + k] += (*hdr)[4 * p + k];
             sum_[4 * p + 3] += c[3];
             // Rec. 709 weights on the encoded values: a display luma.
             const double luma = (0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]) / 255.0;
@@ -42,7 +48,9 @@ Rgba8Image SampleAccumulator::mean() const {
     Rgba8Image out{width_, height_, std::vector<std::uint8_t>(sum_.size())};
     for (std::size_t i = 0; i < sum_.size(); ++i) {
         const double n = std::max<std::uint32_t>(counts_[i / 4], 1);
-        out.pixels[i] = i % 4 == 3 ? static_cast<std::uint8_t>(std::lround(sum_[i] / n)) : linear_to_srgb8(sum_[i] / n);
+        if (i % 4 == 3) out.pixels[i] = static_cast<std::uint8_t>(std::lround(sum_[i] / n));
+        else if (hdr_sum_.empty()) out.pixels[i] = linear_to_srgb8(sum_[i] / n);
+        else out.pixels[i] = display_level(tone_map(hdr_sum_[i] / n) * (hdr_sum_[i - i % 4 + 3] / n));
     }
     return out;
 }

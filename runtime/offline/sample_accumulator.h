@@ -18,8 +18,10 @@ namespace fg {
 class SampleAccumulator {
 public:
     // Adds one sample, to the pixels of the tiles `sampled` keeps (all without); every sample has
-    // the first one's size (std::invalid_argument otherwise).
-    void add(const Rgba8Image& sample, const SampledTiles* sampled = nullptr);
+    // the first one's size (std::invalid_argument otherwise). With `hdr` (the tone map's input,
+    // RenderedFrame::hdr_left), the mean is of that, tone-mapped once; the picture still measures
+    // the noise. Either every sample has one or none.
+    void add(const Rgba8Image& sample, const SampledTiles* sampled = nullptr, const std::vector<float>* hdr = nullptr);
     std::uint32_t samples() const { return samples_; }
     // The mean so far, sRGB-encoded; an empty image before the first sample.
     Rgba8Image mean() const;
@@ -34,6 +36,7 @@ public:
 private:
     std::uint32_t width_ = 0, height_ = 0, samples_ = 0;
     std::vector<float> sum_;                 // linear RGB and alpha per pixel
+    std::vector<double> hdr_sum_;            // the tone map's input and the fade's share, per pixel
     std::vector<std::uint32_t> counts_;      // samples per pixel
     std::uint64_t taken_ = 0;                // their sum
     std::vector<double> luma_, luma_squared_;   // sums of the display luma and its square

@@ -83,6 +83,7 @@ int render(const RenderOptions& o) {
             fmt::print(stderr, "fgplay: --taa and --samples both jitter the rays: choose one\n");
             return 2;
         }
+        frame.hdr = o.samples > 1;
         const SceneSettings& scene = pack->manifest.scene;
         StereoSettings stereo;
         stereo.ipd_m = o.ipd_m;

@@ -228,3 +228,32 @@ TEST_F(Environment, a_sky_split_into_halves_lights_each_side_of_a_sphere_by_its_
     EXPECT_NEAR(in_samples.x, 0.0, 0.02) << figures;
     EXPECT_NEAR(in_samples.y, 0.8, 0.02) << figures;
 }
+
+TEST_F(Environment, samples_are_averaged_before_the_tone_map) {
+    // A ball of albedo 0.8 in a uniform white sky is 0.8 wherever it is seen (the furnace), but
+    // each sample's estimate of it varies. Averaged before the tone map (FrameSettings::hdr), 64
+    // samples show the tone map of 0.8; averaged after it, the mean of the tone-mapped samples,
+    // which is another colour.
+    Pack pack = lit_by_sky(R"({"id": "ball", "type": "prim.sphere", "inputs": {"radius": 1.0}})", "ball.distance",
+                           R"({"position": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 50})", R"({"color": [1.0, 1.0, 1.0]})");
+    auto ball_level = [&](bool hdr) {
+        FrameSettings fs = aov_frame();
+        fs.hdr = hdr;
+        HeadlessRenderer r(test::shared_context(), pack, fs, eye_at_camera());
+        const RenderedFrame f = render_samples(r, r.scene_camera(), 0.0, 0, 64);
+        double sum = 0.0;
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i)
+            if (hit(f, i)) sum += f.left.pixels[4 * i + 1], ++n;
+        return sum / std::max<std::size_t>(n, 1);
+    };
+    const double c = 0.8, expected = 255.0 * (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
+    const double before = ball_level(true), after = ball_level(false);
+    const std::string figures = fmt::format("the ball's mean 8-bit level: {:.2f} averaged before the tone map, {:.2f} after "
+                                            "it; the tone map of the albedo is {:.2f}",
+                                            before, after, expected);
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_NEAR(before, expected, 1.0) << figures;
+    EXPECT_GT(std::abs(after - expected), 3.0) << "averaging after the tone map was no different: " << figures;
+}

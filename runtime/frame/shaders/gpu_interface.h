@@ -163,6 +163,7 @@ struct ShadePush {
     int view;
     int reuse;               // 1: take the other eye's shading where it sees the same point
     int stride;
+    int hdr;                 // 1: also store the tone map's input (FrameSettings::hdr)
 };
 
 struct ResolvePush {

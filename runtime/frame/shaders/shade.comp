@@ -28,6 +28,8 @@ layout(set = 0, binding = 7, rgba32ui) uniform readonly uimage2D fg_history_colo
 layout(set = 0, binding = 8, r32f) uniform readonly image2D fg_history_depth;
 layout(set = 0, binding = 9, rgba32ui) uniform writeonly uimage2D fg_cache_color;
 layout(set = 0, binding = 10, r32f) uniform writeonly image2D fg_cache_depth;
+// The tone map's input and the fade's share kept, for samples averaged before the tone map (pc.hdr).
+layout(set = 0, binding = 13, rgba32f) uniform writeonly image2D fg_hdr;
 layout(push_constant) uniform FgShadePush { ShadePush pc; };
 
 // The pixel of view o (an eye `eye` shaded, this frame or the one before) that the point p lands
@@ -104,6 +106,7 @@ void fg_store_final(ivec2 pixel, vec3 color, float t)
 #endif
     color = fg_post_effects(color, pixel, ivec2(fg_frame.eye_size), t, closest);
     imageStore(fg_final, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
+    if (pc.hdr != 0) imageStore(fg_hdr, pixel, vec4(color * fg_scene.exposure, 1.0 - fg_scene.fade));
 }
 
 void main()
