@@ -61,7 +61,11 @@ struct SceneSettings {
     } background;
     struct Fog {
         glm::dvec3 color{0.05, 0.05, 0.08};
-        double density = 0.1;                         // extinction per unit distance
+        double density = 0.1;                         // extinction per unit distance (at `height`)
+        // Height fog: the density falls by e every 1 / height_falloff scene units above `height`
+        // (and rises below it); 0: the same density everywhere.
+        double height_falloff = 0.0;
+        double height = 0.0;
         bool operator==(const Fog&) const = default;
     };
     std::optional<Fog> fog;

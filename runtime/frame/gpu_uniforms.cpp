@@ -71,6 +71,7 @@ GpuScene make_gpu_scene(const SceneSettings& s) {
     if (s.fog) {
         g.fog_color = v3(s.fog->color);
         g.fog_density = static_cast<float>(s.fog->density);
+        g.fog_height = {static_cast<float>(s.fog->height_falloff), static_cast<float>(s.fog->height), 0.0f, 0.0f};
     }
     if (s.glow) {
         g.glow_color = v3(s.glow->color * s.glow->intensity);

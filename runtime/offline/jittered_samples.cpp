@@ -90,7 +90,8 @@ RenderedFrame render_samples(HeadlessRenderer& renderer, const std::function<Sam
     renderer.set_light_sample(std::nullopt);
     renderer.set_sampled_tiles(nullptr, nullptr);
     first.left = left.mean();
-    if (right.samples() > 0) first.right = right.mean();
+    first.hdr_left = left.hdr_mean();
+    if (right.samples() > 0) first.right = right.mean(), first.hdr_right = right.hdr_mean();
     if (!sums_left.empty()) mean_samples(first.aovs_left, sums_left, left.counts());
     if (!sums_right.empty()) mean_samples(first.aovs_right, sums_right, right.counts());
     return first;

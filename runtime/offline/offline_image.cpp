@@ -117,11 +117,6 @@ void mean_samples(std::vector<std::vector<std::byte>>& aovs, const AovSums& sums
     }
 }
 
-double tonemap_beauty(double c) {
-    // The ACES fit of post_effects.glsl's fg_tonemap, after its exposure (the beauty carries it).
-    return std::clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
-}
-
 std::vector<std::uint8_t> encode_png16(const std::vector<OfflineEye>& eyes, bool stacked) {
     const std::size_t beauty = beauty_index();
     const std::uint32_t eye_w = eyes.at(0).width, eye_h = eyes.at(0).height;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "display_transform.h"
 #include "exr_frame.h"
 #include "frame/dispatch_tiles.h"
 #include "frame/image_output.h"
@@ -46,7 +47,5 @@ void mean_samples(std::vector<std::vector<std::byte>>& aovs, const AovSums& sums
 // The beauty tone mapped as the frame's own tone map does it (ACES fit; the beauty carries the
 // exposure), in 16 bits per channel; eyes side by side, or top-bottom for ODS (`stacked`).
 std::vector<std::uint8_t> encode_png16(const std::vector<OfflineEye>& eyes, bool stacked);
-// The same tone map, one channel: display value in [0, 1].
-double tonemap_beauty(double linear);
 
 }  // namespace fg

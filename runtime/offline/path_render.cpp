@@ -34,7 +34,7 @@ FrameSettings frame_settings(const PathRenderSettings& s) {
     f.knobs = s.knobs;
     f.count_evaluations = s.count_evaluations;
     f.aovs = needs_aovs(s.format);
-    f.hdr = s.samples > 1 && !s.taa;
+    f.hdr = (s.samples > 1 || s.supersample > 1) && !s.taa;
     // Offline frames are for every part of the image: no lens mask, no foveation.
     f.lens_mask = false;
     f.foveation = 0.0;
@@ -133,11 +133,17 @@ OfflineFrame PathRenderer::render_frame(int frame) {
                      settings_.supersample * settings_.supersample * settings_.samples;
     last_evaluations_ = static_cast<double>(evaluations) / samples;
     std::uint32_t ss = settings_.supersample;
+    // Averaged before the tone map where the frame kept its input (FrameSettings::hdr).
+    auto picture = [&](const Rgba8Image& display, const std::vector<float>& hdr) {
+        return hdr.empty() ? downsample(display, ss) : display_picture(hdr, display.width, display.height, ss);
+    };
     OfflineFrame out;
     switch (settings_.projection) {
-        case Projection::Equirect: out.picture = downsample(r.left, ss); break;
-        case Projection::Ods: out.picture = top_bottom(downsample(r.left, ss), downsample(r.right, ss)); break;
-        case Projection::Perspective: out.picture = side_by_side(downsample(r.left, ss), downsample(r.right, ss)); break;
+        case Projection::Equirect: out.picture = picture(r.left, r.hdr_left); break;
+        case Projection::Ods: out.picture = top_bottom(picture(r.left, r.hdr_left), picture(r.right, r.hdr_right)); break;
+        case Projection::Perspective:
+            out.picture = side_by_side(picture(r.left, r.hdr_left), picture(r.right, r.hdr_right));
+            break;
     }
     if (!needs_aovs(settings_.format)) return out;
     const bool perspective = settings_.projection == Projection::Perspective;

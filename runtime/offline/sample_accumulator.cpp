@@ -50,8 +50,15 @@ Rgba8Image SampleAccumulator::mean() const {
         const double n = std::max<std::uint32_t>(counts_[i / 4], 1);
         if (i % 4 == 3) out.pixels[i] = static_cast<std::uint8_t>(std::lround(sum_[i] / n));
         else if (hdr_sum_.empty()) out.pixels[i] = linear_to_srgb8(sum_[i] / n);
-        else out.pixels[i] = display_level(tone_map(hdr_sum_[i] / n) * (hdr_sum_[i - i % 4 + 3] / n));
+        else out.pixels[i] = display_level(tonemap_beauty(hdr_sum_[i] / n) * (hdr_sum_[i - i % 4 + 3] / n));
     }
+    return out;
+}
+
+std::vector<float> SampleAccumulator::hdr_mean() const {
+    std::vector<float> out(hdr_sum_.size());
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = static_cast<float>(hdr_sum_[i] / std::max<std::uint32_t>(counts_[i / 4], 1));
     return out;
 }
 

@@ -25,6 +25,8 @@ public:
     std::uint32_t samples() const { return samples_; }
     // The mean so far, sRGB-encoded; an empty image before the first sample.
     Rgba8Image mean() const;
+    // The mean tone map input, where the samples had one (else empty).
+    std::vector<float> hdr_mean() const;
     // Samples each pixel took, row by row, and all of them together.
     const std::vector<std::uint32_t>& counts() const { return counts_; }
     std::uint64_t taken() const { return taken_; }

@@ -160,7 +160,7 @@ public:
     const PlayStats& stats() const { return stats_; }
     const FrameTimeLog& frame_times() const { return frame_times_; }
     // The budget the frames are held to (or would be, without the governor); 0 when none is known.
-    double frame_budget_ms() { return budget_ms().value_or(0.0); }
+    double frame_budget_ms() { return choose_budget().ms.value_or(0.0); }
     const SessionLifecycle& lifecycle() const { return lifecycle_; }
     const FrameSettings& frame_settings() const { return frame_; }
     VkFormat format() const { return format_; }
@@ -514,27 +514,33 @@ private:
     // The frame budget: --budget-ms, else the display's own refresh (XR_FB_display_refresh_rate),
     // else the display period learned from the predicted ones (display_period.h): never the first
     // frame's placeholder, never a period stretched to cover a slow application, which would never
-    // ask for a cheaper frame. None yet on the first frame. Says which when it changes.
-    std::optional<double> budget_ms() {
-        std::optional<double> budget;
+    // ask for a cheaper frame. None yet on the first frame.
+    struct Budget {
+        std::optional<double> ms;
         std::string source;
+    };
+    Budget choose_budget() {
+        Budget b;
         float hz = 0.0f;
         if (options_.budget_ms > 0.0) {
-            budget = options_.budget_ms;
-            source = "--budget-ms";
+            b = {options_.budget_ms, "--budget-ms"};
         } else if (refresh_rate_ && refresh_rate_(session_, &hz) == XR_SUCCESS && hz > 0.0f) {
-            budget = 1000.0 / hz;
-            source = fmt::format("the display's refresh rate, {:.4g} Hz", hz);
-        } else if ((budget = display_period_.ms())) {
-            source = "the display period learned from the predicted ones, the first left out";
+            b = {1000.0 / hz, fmt::format("the display's refresh rate, {:.4g} Hz", hz)};
+        } else if ((b.ms = display_period_.ms())) {
+            b.source = "the display period learned from the predicted ones, the first left out";
         }
-        if (budget && (*budget != budget_ms_ || source != budget_source_)) {
-            fmt::print("governor: budget {:.4g} ms per frame ({})\n", *budget, source);
+        return b;
+    }
+    // The budget the governor holds this frame to; says which when it changes.
+    std::optional<double> budget_ms() {
+        const Budget b = choose_budget();
+        if (b.ms && (*b.ms != budget_ms_ || b.source != budget_source_)) {
+            fmt::print("governor: budget {:.4g} ms per frame ({})\n", *b.ms, b.source);
             std::fflush(stdout);
-            budget_source_ = source;
-            budget_ms_ = *budget;
+            budget_source_ = b.source;
+            budget_ms_ = *b.ms;
         }
-        return budget;
+        return b.ms;
     }
 
     void apply(const GovernorLevel& level) {

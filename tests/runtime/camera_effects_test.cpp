@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "offline/depth_of_field.h"
+#include "offline/display_transform.h"
 #include "offline/linear_light.h"
 #include "offline/jittered_samples.h"
 #include "offline/path_render.h"
@@ -41,11 +42,19 @@ Pack wall_at(double distance) {
     }})", -distance - 0.05, kFovDeg));
 }
 
-// The centre row's linear light over the wall's.
+// The scene-linear light a display level shows: the tone map inverted (samples are averaged before
+// it, so a blur is a blur of light).
+double scene_light(std::uint8_t level) {
+    double lo = 0.0, hi = 64.0;
+    for (int i = 0; i < 60; ++i) (tonemap_beauty(0.5 * (lo + hi)) < level / 255.0 ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+}
+
+// The centre row's light over the wall's.
 std::vector<double> centre_row(const Rgba8Image& image) {
     const std::size_t row = kSize / 2;
     std::vector<double> light(kSize);
-    for (std::size_t x = 0; x < kSize; ++x) light[x] = srgb8_linear_table()[image.pixels[4 * (row * kSize + x)]];
+    for (std::size_t x = 0; x < kSize; ++x) light[x] = scene_light(image.pixels[4 * (row * kSize + x)]);
     const double wall = light[kSize - 4];
     for (double& v : light) v /= wall;
     return light;
@@ -90,6 +99,7 @@ RenderedFrame blurred_frame(double distance, const SampleBudget& budget, bool co
     fs.width = fs.height = kSize;
     fs.stereo = StereoMode::Naive;
     fs.count_evaluations = count_evaluations;
+    fs.hdr = true;   // as fgplay render --samples
     StereoSettings stereo{kSize, kSize};
     stereo.ipd_m = 0.0;
     HeadlessRenderer r(test::shared_context(), pack, fs, stereo);

@@ -129,6 +129,9 @@ struct GpuScene {
     // The environment (FG_HAS_ENVIRONMENT): rgb its colour times intensity, w its turn about +y
     // (radians, counter-clockwise from above).
     vec4 environment;
+    // Height fog (FG_HAS_FOG): x the density's falloff per scene unit up (0: homogeneous), y the
+    // height where the density is fog_density.
+    vec4 fog_height;
 };
 
 // Push constants, one struct per pass. `stride` is 1 for a full-resolution dispatch, 2 for the
@@ -198,6 +201,6 @@ static_assert(offsetof(GpuFrame, anchor_hi) == 352 && offsetof(GpuFrame, previou
 static_assert(offsetof(GpuFrame, reuse) == 576 && offsetof(GpuFrame, jitter) == 592 && sizeof(GpuFrame) == 624);
 static_assert(offsetof(GpuScene, fog_color) == 128 && offsetof(GpuScene, glow_color) == 144);
 static_assert(offsetof(GpuScene, bounds_centre) == 160 && offsetof(GpuScene, bounds_centre_lo) == 176);
-static_assert(offsetof(GpuScene, exposure) == 192 && offsetof(GpuScene, auxiliary_light) == 208 && sizeof(GpuScene) == 352);
+static_assert(offsetof(GpuScene, exposure) == 192 && offsetof(GpuScene, auxiliary_light) == 208 && sizeof(GpuScene) == 368);
 }  // namespace fg
 #endif

@@ -1,16 +1,39 @@
 // What happens to a shaded colour before display, shared by the post pass (the picture), the
 // shade pass (its tone map, when the pack has no post effects) and the AOV pass (the HDR beauty).
 
-// The post effects the pack lists, and only those: homogeneous scattering fog, glow from the
-// closest approach along the ray (`closest`), the vignette. t < 0 is a miss.
-vec3 fg_post_effects(vec3 color, ivec2 pixel, ivec2 size, float t, float closest)
+#ifdef FG_HAS_FOG
+// The fog's optical depth along the ray from ro (frame coordinates) along the unit rd, over t: the
+// density times t, and for height fog the density's exponential in height integrated in closed
+// form, d e^(-k (y0 - h)) (1 - e^(-k dy t)) / (k dy), its series where k dy t is small.
+float fg_fog_depth(vec3 ro, vec3 rd, float t)
+{
+    float depth = fg_scene.fog_density * t;
+    float k = fg_scene.fog_height.x;
+    if (k > 0.0) {
+#ifdef FG_DOUBLE_SCENE
+        float y0 = float(double(ro.y) + fg_anchor().y);
+#else
+        float y0 = ro.y;
+#endif
+        float x = k * rd.y * t;
+        float along = abs(x) < 1e-3 ? 1.0 - 0.5 * x + x * x / 6.0 : (1.0 - exp(-x)) / x;
+        depth *= exp(-k * (y0 - fg_scene.fog_height.y)) * along;
+    }
+    return depth;
+}
+#endif
+
+// The post effects the pack lists, and only those: scattering fog (homogeneous or height fog)
+// along the ray from ro along rd, glow from the closest approach along the ray (`closest`), the
+// vignette. t < 0 is a miss.
+vec3 fg_post_effects(vec3 color, ivec2 pixel, ivec2 size, vec3 ro, vec3 rd, float t, float closest)
 {
 #ifdef FG_HAS_GLOW
     color += fg_scene.glow_color * exp(-max(closest, 0.0) / fg_scene.glow_falloff);
 #endif
 #ifdef FG_HAS_FOG
     float distance_through = t < 0.0 ? fg_scene.far_limit : t;
-    color = mix(fg_scene.fog_color, color, exp(-fg_scene.fog_density * distance_through));
+    color = mix(fg_scene.fog_color, color, exp(-fg_fog_depth(ro, rd, distance_through)));
 #endif
 #ifdef FG_HAS_VIGNETTE
     // A comfort effect of the headset's frustum; a panorama has no edges to darken.

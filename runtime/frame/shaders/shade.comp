@@ -98,13 +98,13 @@ bool fg_reuse_previous_frame(vec3 p, float t, out FgKeptShading kept)
 
 // The final pixel: the post effects the pack lists, the tone map, and the fade (snap turns, the
 // head in the surface), which scales the displayed image linearly.
-void fg_store_final(ivec2 pixel, vec3 color, float t)
+void fg_store_final(ivec2 pixel, vec3 color, vec3 ro, vec3 rd, float t)
 {
     float closest = 0.0;
 #ifdef FG_HAS_GLOW
     closest = imageLoad(fg_glow, pixel).x;
 #endif
-    color = fg_post_effects(color, pixel, ivec2(fg_frame.eye_size), t, closest);
+    color = fg_post_effects(color, pixel, ivec2(fg_frame.eye_size), ro, rd, t, closest);
     imageStore(fg_final, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
     if (pc.hdr != 0) imageStore(fg_hdr, pixel, vec4(color * fg_scene.exposure, 1.0 - fg_scene.fade));
 }
@@ -152,5 +152,5 @@ void main()
         imageStore(fg_cache_color, pixel, fg_pack_kept(kept));
         imageStore(fg_cache_depth, pixel, vec4(t));
     }
-    fg_store_final(pixel, color, t);
+    fg_store_final(pixel, color, ro, rd, t);
 }

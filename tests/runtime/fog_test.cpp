@@ -1,0 +1,83 @@
+// Fog against Beer-Lambert, on real frames (the beauty AOV, linear): before a white background and
+// with black fog, a pixel shows the transmittance along its ray to the far limit. Homogeneous fog is
+// exp(-density t); height fog's density falls exponentially with height, and its transmittance is
+// compared with the optical depth integrated numerically along each pixel's ray.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <fmt/format.h>
+
+#include <Imath/half.h>
+
+#include "frame/aov_images.h"
+#include "runtime_test_support.h"
+
+using namespace fg;
+using fg::test::RuntimeTest;
+
+namespace {
+
+constexpr std::uint32_t kSize = 64;
+
+double beauty_red(const RenderedFrame& f, std::size_t pixel) {
+    std::size_t at = 0;
+    while (aov_images()[at].name != "beauty") ++at;
+    Imath::half h;
+    std::memcpy(&h, f.aovs_left[at].data() + 4 * pixel * sizeof h, sizeof h);
+    return static_cast<double>(h);
+}
+
+class Fog : public RuntimeTest {};
+
+}  // namespace
+
+TEST_F(Fog, transmittance_along_each_ray_is_beer_lambert_for_homogeneous_and_height_fog) {
+    const double density = 0.15, far = 10.0, falloff = 0.5, base = 0.25;
+    const glm::dvec3 eye(0.0, 1.0, 0.0);
+    for (const bool height : {false, true}) {
+        // Nothing in view: one small ball behind the camera.
+        Pack pack = test::compile_pack(fmt::format(R"({{
+          "format": "fractograph-graph", "version": 1, "name": "fog",
+          "nodes": [{{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0, 0, 20]}}}},
+                    {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": 0.1}}}}],
+          "outputs": {{"distance": "ball.distance"}},
+          "scene": {{"camera": {{"position": [0, 1, 0], "target": [0, 1.2, -1], "fov_deg": 80}},
+                    "background": [1, 1, 1], "bounds": {{"radius": 50}}, "max_distance": {},
+                    "fog": {{"color": [0, 0, 0], "density": {}{}}}}}
+        }})", far, density, height ? fmt::format(R"(, "height_falloff": {}, "height": {})", falloff, base) : ""));
+        FrameSettings fs;
+        fs.width = fs.height = kSize;
+        fs.stereo = StereoMode::Naive;
+        fs.aovs = true;
+        StereoSettings stereo{kSize, kSize};
+        stereo.ipd_m = 0.0;
+        HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+        const RenderedFrame f = r.render(r.scene_camera(), 0.0);
+        const View& view = r.views().left;
+        double worst = 0.0, lowest = 1.0;
+        for (std::uint32_t y = 0; y < kSize; y += 3)
+            for (std::uint32_t x = 0; x < kSize; x += 3) {
+                const glm::dvec3 d = view.ray((x + 0.5) / kSize, (y + 0.5) / kSize);
+                // The optical depth by Simpson's rule over 2000 intervals.
+                double depth = 0.0;
+                const int n = 2000;
+                for (int i = 0; i <= n; ++i) {
+                    const double s = far * i / n, w = i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0;
+                    const double rho = height ? density * std::exp(-falloff * (eye.y + d.y * s - base)) : density;
+                    depth += w * rho * far / (3.0 * n);
+                }
+                const double expected = std::exp(-depth);
+                if (expected < 0.05) continue;   // too dark for the beauty's half floats to say 0.5 %
+                lowest = std::min(lowest, expected);
+                worst = std::max(worst, std::abs(beauty_red(f, std::size_t(y) * kSize + x) / expected - 1.0));
+            }
+        const std::string figures = fmt::format("{} fog: the transmittance at most {:.3f} % from Beer-Lambert's "
+                                                "(down to {:.3f})", height ? "height" : "homogeneous", 100.0 * worst, lowest);
+        RecordProperty(height ? "height" : "homogeneous", figures);
+        std::printf("%s\n", figures.c_str());
+        EXPECT_LT(worst, 0.005) << figures;
+        EXPECT_LT(lowest, 0.5) << "the fog is too thin to test: " << figures;
+    }
+}
