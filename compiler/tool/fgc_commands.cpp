@@ -53,7 +53,7 @@ std::string join(const std::vector<std::string>& xs, const char* sep = ", ") {
     return s.empty() ? "(none)" : s;
 }
 
-void print_summary(const PackManifest& m, std::size_t bytes) {
+void print_summary(const PackManifest& m, std::size_t bytes, const std::optional<EnvironmentImage>& sky) {
     fmt::print("pack '{}' ({}, {} bytes)\n", m.name, m.compiler, bytes);
     fmt::print("  effects:    {}\n", join(m.effects.names()));
     std::vector<std::string> passes;
@@ -65,6 +65,10 @@ void print_summary(const PackManifest& m, std::size_t bytes) {
                step ? step->value : 1.0 / m.lipschitz_bound);
     if (m.period) fmt::print("  period:     {:g} x {:g} x {:g} (the scene repeats; the runtime wraps the head)\n", (*m.period)[0],
                              (*m.period)[1], (*m.period)[2]);
+    if (const auto& env = m.scene.environment)
+        fmt::print("  environment: {}\n", env->image.empty() ? std::string("a uniform sky")
+                                                              : fmt::format("{} ({}x{}, in the pack)", env->image, sky ? sky->width : 0,
+                                                                            sky ? sky->height : 0));
     for (const auto& f : m.fractals) {
         const auto* bias = m.find_spec(f.bias_spec);
         const auto* iters = m.find_spec(f.iterations_spec);
@@ -128,7 +132,7 @@ int compile(const Common& c, const std::string& graph, const std::string& output
     if (!write_file_atomically(output, bytes, write_diag)) return report(write_diag, graph);
     if (!c.quiet) {
         fmt::print("wrote {}\n", output);
-        print_summary(result->manifest, bytes.size());
+        print_summary(result->manifest, bytes.size(), result->environment);
     }
     if (verbose) {
         const auto& t = result->times;
@@ -151,7 +155,7 @@ int info(const Common&, const std::string& path, bool json) {
         fmt::print("{}\n", pack->manifest_json.dump(2));
         return 0;
     }
-    print_summary(pack->manifest, pack->file_size);
+    print_summary(pack->manifest, pack->file_size, pack->environment);
     fmt::print("  format:     {}.{}, {} chunks\n", pack->version_major, pack->version_minor, pack->chunks.size());
     for (const auto& ch : pack->chunks)
         fmt::print("    {} {:<10} {:>8} bytes at {:>7}  xxh64 {:016x}\n", tag_text(ch.tag), ch.name, ch.payload_size,
