@@ -62,19 +62,6 @@ std::string write_sky(const std::string& name, int width, int height, Colour col
     return path.string();
 }
 
-FrameSettings aov_frame() {
-    FrameSettings fs;
-    fs.width = fs.height = kSize;
-    fs.stereo = StereoMode::Naive;
-    fs.aovs = true;
-    return fs;
-}
-StereoSettings eye_at_camera() {
-    StereoSettings stereo{kSize, kSize};
-    stereo.ipd_m = 0.0;
-    return stereo;
-}
-
 // One body (`distance` and its nodes) lit by the environment alone, albedo 0.8.
 Pack lit_by_sky(const std::string& nodes, const std::string& distance, const std::string& camera, const std::string& environment) {
     return test::compile_pack(fmt::format(R"({{
@@ -94,7 +81,7 @@ TEST_F(Environment, a_white_diffuse_sphere_in_a_uniform_sky_returns_its_albedo) 
     Pack pack = lit_by_sky(R"({"id": "ball", "type": "prim.sphere", "inputs": {"radius": 1.0}})", "ball.distance",
                            R"({"position": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 50})",
                            R"({"color": [1.0, 1.0, 1.0]})");
-    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
     const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
     const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
     double frame_worst = 0.0, sampled_sum = 0.0, sky_worst = 0.0;
@@ -131,7 +118,7 @@ TEST_F(Environment, a_sky_bright_near_the_zenith_lights_a_plane_as_the_integral_
                            R"({"position": [0, 2, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 60})",
                            fmt::format(R"({{"image": "{}"}})", sky));
     std::filesystem::remove(sky);
-    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
     const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
     const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
     double frame_sum = 0.0, sampled_sum = 0.0;
@@ -172,7 +159,7 @@ TEST_F(Environment, the_background_shows_the_image_where_a_panorama_puts_it_turn
                                   {"id": "ball", "type": "prim.sphere", "inputs": {"p": "at.p", "radius": 0.1}})",
                                "ball.distance", R"({"position": [0, 0, 0], "target": [0, 0.3, -1], "fov_deg": 80})",
                                fmt::format(R"({{"image": "{}", "rotation_deg": {}}})", sky, turn));
-        HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+        HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
         const RenderedFrame f = r.render(r.scene_camera(), 0.0);
         const View& view = r.views().left;
         double worst = 0.0;
@@ -205,7 +192,7 @@ TEST_F(Environment, a_sky_split_into_halves_lights_each_side_of_a_sphere_by_its_
                            R"({"position": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 50})",
                            fmt::format(R"({{"image": "{}"}})", sky));
     std::filesystem::remove(sky);
-    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
     const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
     const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
     glm::dvec3 in_frame(0.0), in_samples(0.0);
@@ -237,9 +224,9 @@ TEST_F(Environment, samples_are_averaged_before_the_tone_map) {
     Pack pack = lit_by_sky(R"({"id": "ball", "type": "prim.sphere", "inputs": {"radius": 1.0}})", "ball.distance",
                            R"({"position": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 50})", R"({"color": [1.0, 1.0, 1.0]})");
     auto ball_level = [&](bool hdr) {
-        FrameSettings fs = aov_frame();
+        FrameSettings fs = test::aov_frame(kSize);
         fs.hdr = hdr;
-        HeadlessRenderer r(test::shared_context(), pack, fs, eye_at_camera());
+        HeadlessRenderer r(test::shared_context(), pack, fs, test::eye_at_camera(kSize));
         const RenderedFrame f = render_samples(r, r.scene_camera(), 0.0, 0, 64);
         double sum = 0.0;
         std::size_t n = 0;

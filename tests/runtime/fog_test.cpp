@@ -47,13 +47,7 @@ TEST_F(Fog, transmittance_along_each_ray_is_beer_lambert_for_homogeneous_and_hei
                     "background": [1, 1, 1], "bounds": {{"radius": 50}}, "max_distance": {},
                     "fog": {{"color": [0, 0, 0], "density": {}{}}}}}
         }})", far, density, height ? fmt::format(R"(, "height_falloff": {}, "height": {})", falloff, base) : ""));
-        FrameSettings fs;
-        fs.width = fs.height = kSize;
-        fs.stereo = StereoMode::Naive;
-        fs.aovs = true;
-        StereoSettings stereo{kSize, kSize};
-        stereo.ipd_m = 0.0;
-        HeadlessRenderer r(test::shared_context(), pack, fs, stereo);
+        HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
         const RenderedFrame f = r.render(r.scene_camera(), 0.0);
         const View& view = r.views().left;
         double worst = 0.0, lowest = 1.0;

@@ -58,22 +58,8 @@ std::vector<float> world_positions(const RenderedFrame& f) {
     return world;
 }
 
-// kSize² with the AOVs, the left eye at the camera.
-FrameSettings aov_frame() {
-    FrameSettings fs;
-    fs.width = fs.height = kSize;
-    fs.stereo = StereoMode::Naive;
-    fs.aovs = true;
-    return fs;
-}
-StereoSettings eye_at_camera() {
-    StereoSettings stereo{kSize, kSize};
-    stereo.ipd_m = 0.0;
-    return stereo;
-}
-
 RenderedFrame render(const Pack& pack) {
-    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
     return r.render(r.scene_camera(), 0.0);
 }
 
@@ -189,7 +175,7 @@ TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
     // point sees past the sphere, integrated here from closed-form ray-sphere intersections.
     const double radius = 0.3, height = 1.0, angle_deg = 4.0, start = 0.002;
     Pack pack = sphere_over_a_plane(radius, height, angle_deg, start);
-    HeadlessRenderer r(test::shared_context(), pack, aov_frame(), eye_at_camera());
+    HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
     const std::size_t row = kSize / 2;
     auto shadow_row = [&](const RenderedFrame& f) {
         const std::vector<float> light = light_aov(f);

@@ -35,6 +35,20 @@ Pack compile_pack(const std::string& graph_text) {
     return std::move(*pack);
 }
 
+FrameSettings aov_frame(std::uint32_t size) {
+    FrameSettings fs;
+    fs.width = fs.height = size;
+    fs.stereo = StereoMode::Naive;
+    fs.aovs = true;
+    return fs;
+}
+
+StereoSettings eye_at_camera(std::uint32_t size) {
+    StereoSettings stereo{size, size};
+    stereo.ipd_m = 0.0;
+    return stereo;
+}
+
 std::unique_ptr<CpuScene> cpu_scene(const Pack& pack) {
     auto s = std::make_unique<CpuScene>();
     Diagnostics diag;

@@ -23,6 +23,10 @@ std::string read_source_file(const std::string& relative);
 std::vector<std::string> source_graph_names(const std::string& folder);
 // Compiles graph text and reads the pack back, as fgplay would.
 Pack compile_pack(const std::string& graph_text);
+// A size x size frame of one naive stereo pair with the AOVs, and a stereo rig whose left eye is the
+// camera (no IPD): what tests that read a view's AOVs against closed forms render.
+FrameSettings aov_frame(std::uint32_t size);
+StereoSettings eye_at_camera(std::uint32_t size);
 // The CPU twin of a pack's graph.
 struct CpuScene {
     IrGraph ir;
