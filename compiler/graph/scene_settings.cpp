@@ -110,13 +110,15 @@ SceneSettings parse_scene_settings(const json* jp, const std::string& ptr, Diagn
             r.vector(*b, "bottom", p, s.background.bottom, kColour);
         }
     }
-    if (const json* f = r.block(j, "fog", ptr, {"color", "density", "height_falloff", "height"})) {
+    if (const json* f = r.block(j, "fog", ptr, {"color", "density", "height_falloff", "height", "scatter", "anisotropy"})) {
         std::string p = ptr + "/fog";
         SceneSettings::Fog fog;
         r.vector(*f, "color", p, fog.color, kColour);
         r.optional(*f, "density", p, fog.density, NumberRange{0.0, 1e6});
         r.optional(*f, "height_falloff", p, fog.height_falloff, NumberRange{0.0, 1e6});
         r.optional(*f, "height", p, fog.height);
+        r.optional(*f, "scatter", p, fog.scatter, NumberRange{0.0, 1e3});
+        r.optional(*f, "anisotropy", p, fog.anisotropy, NumberRange{-0.95, 0.95});
         s.fog = fog;
     }
     if (const json* g = r.block(j, "glow", ptr, {"color", "intensity", "falloff"})) {
@@ -193,6 +195,7 @@ json scene_settings_to_json(const SceneSettings& s) {
     if (s.fog) {
         j["fog"] = {{"color", v(s.fog->color)}, {"density", s.fog->density}};
         if (s.fog->height_falloff != 0.0) j["fog"].update({{"height_falloff", s.fog->height_falloff}, {"height", s.fog->height}});
+        if (s.fog->scatter != 0.0) j["fog"].update({{"scatter", s.fog->scatter}, {"anisotropy", s.fog->anisotropy}});
     }
     if (s.glow) j["glow"] = {{"color", v(s.glow->color)}, {"intensity", s.glow->intensity}, {"falloff", s.glow->falloff}};
     if (s.environment) {

@@ -71,7 +71,8 @@ GpuScene make_gpu_scene(const SceneSettings& s) {
     if (s.fog) {
         g.fog_color = v3(s.fog->color);
         g.fog_density = static_cast<float>(s.fog->density);
-        g.fog_height = {static_cast<float>(s.fog->height_falloff), static_cast<float>(s.fog->height), 0.0f, 0.0f};
+        g.fog_height = {static_cast<float>(s.fog->height_falloff), static_cast<float>(s.fog->height),
+                        static_cast<float>(s.fog->scatter), static_cast<float>(s.fog->anisotropy)};
     }
     if (s.glow) {
         g.glow_color = v3(s.glow->color * s.glow->intensity);

@@ -12,6 +12,7 @@
 #include <Imath/half.h>
 
 #include "frame/aov_images.h"
+#include "offline/jittered_samples.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -74,4 +75,74 @@ TEST_F(Fog, transmittance_along_each_ray_is_beer_lambert_for_homogeneous_and_hei
         EXPECT_LT(worst, 0.005) << figures;
         EXPECT_LT(lowest, 0.5) << "the fog is too thin to test: " << figures;
     }
+}
+
+TEST_F(Fog, the_light_it_scatters_follows_the_phase_and_samples_shadow_it_into_shafts) {
+    // Black fog of density 0.1 before a black sky, scattering the main light (colour 1): a ray to
+    // the far limit 10 gathers share * phase * (1 - e^-1). Looking down -z with the light straight
+    // up, a slab above the left half of the view (x < 0) shades every point of the rays that lean
+    // left: sampled, they gather nothing and the others all of it; a frame does not shadow.
+    const double density = 0.1, far = 10.0, share = 1.0;
+    auto scene = [&](const glm::dvec3& light, double anisotropy) {
+        return test::compile_pack(fmt::format(R"({{
+          "format": "fractograph-graph", "version": 1, "name": "shafts",
+          "nodes": [{{"id": "at", "type": "xform.translate", "inputs": {{"offset": [-5, 2, -5]}}}},
+                    {{"id": "slab", "type": "prim.box", "inputs": {{"p": "at.p", "size": [5, 0.1, 10]}}}}],
+          "outputs": {{"distance": "slab.distance"}},
+          "scene": {{"camera": {{"position": [0, 0, 0], "target": [0, 0, -1], "fov_deg": 40}},
+                    "light": {{"direction": [{}, {}, {}], "color": [1, 1, 1], "ambient": [0, 0, 0]}},
+                    "background": [0, 0, 0], "bounds": {{"radius": 50}}, "max_distance": {},
+                    "fog": {{"color": [0, 0, 0], "density": {}, "scatter": {}, "anisotropy": {}}}}}
+        }})", light.x, light.y, light.z, far, density, share, anisotropy));
+    };
+    const double opaque = 1.0 - std::exp(-density * far);
+    auto phase = [](double g, double cos_angle) {
+        return (1.0 - g * g) / (4.0 * glm::pi<double>() * std::pow(1.0 + g * g - 2.0 * g * cos_angle, 1.5));
+    };
+    // A frame, forward-scattering fog, the light ahead and up: each ray by its angle to the light.
+    const glm::dvec3 ahead = glm::normalize(glm::dvec3(0.0, 0.6, -0.8));
+    {
+        Pack pack = scene(ahead, 0.6);
+        HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
+        const RenderedFrame f = r.render(r.scene_camera(), 0.0);
+        double worst = 0.0;
+        int checked = 0;
+        for (std::uint32_t y = kSize / 2 - 8; y < kSize / 2 + 8; y += 2)
+            for (std::uint32_t x = 0; x < kSize; x += 3) {
+                const glm::dvec3 d = r.views().left.ray((x + 0.5) / kSize, (y + 0.5) / kSize);
+                const double expected = share * phase(0.6, glm::dot(ahead, d)) * opaque;
+                worst = std::max(worst, std::abs(beauty_red(f, std::size_t(y) * kSize + x) / expected - 1.0));
+                ++checked;
+            }
+        const std::string figures = fmt::format("a frame of forward-scattering fog (g 0.6): {} rays at most {:.3f} % from "
+                                                "share x phase x (1 - T)", checked, 100.0 * worst);
+        RecordProperty("phase", figures);
+        std::printf("%s\n", figures.c_str());
+        EXPECT_LT(worst, 0.01) << figures;
+    }
+    // The light straight up, the slab over the left: samples shadow, a frame does not.
+    Pack pack = scene({0.0, 1.0, 0.0}, 0.0);
+    HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
+    const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
+    const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 16);
+    const double lit = share * phase(0.0, 0.0) * opaque;
+    double left_frame = 0.0, left_sampled = 0.0, right_sampled = 0.0;
+    int left = 0, right = 0;
+    for (std::uint32_t y = kSize / 2 - 8; y < kSize / 2 + 8; ++y)
+        for (std::uint32_t x = 0; x < kSize; ++x) {
+            const glm::dvec3 d = r.views().left.ray((x + 0.5) / kSize, (y + 0.5) / kSize);
+            const std::size_t i = std::size_t(y) * kSize + x;
+            // Away from the slab's edge by more than the pixel's cone, which shadow rays hit by.
+            if (d.x < -0.1) left_frame += beauty_red(frame, i), left_sampled += beauty_red(sampled, i), ++left;
+            if (d.x > 0.1) right_sampled += beauty_red(sampled, i), ++right;
+        }
+    left_frame /= left, left_sampled /= left, right_sampled /= right;
+    const std::string figures = fmt::format(
+        "light straight up, a slab over the left: 16 samples gather {:.5f} right and {:.5f} left (lit: {:.5f}); a "
+        "frame {:.5f} left", right_sampled, left_sampled, lit, left_frame);
+    RecordProperty("shafts", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_NEAR(right_sampled / lit, 1.0, 0.01) << figures;
+    EXPECT_LT(left_sampled, 0.01 * lit) << figures;
+    EXPECT_NEAR(left_frame / lit, 1.0, 0.01) << figures;
 }

@@ -42,8 +42,12 @@ void main()
 #ifdef FG_HAS_GLOW
     closest = imageLoad(fg_glow, pixel).x;
 #endif
+    vec3 scattered = vec3(0.0);
+#ifdef FG_HAS_FOG
+    scattered = fg_fog_light(ro, rd, t);
+#endif
     if (t < 0.0) {
-        vec3 beauty = fg_post_effects(fg_background(rd), pixel, size, ro, rd, t, closest);
+        vec3 beauty = fg_post_effects(fg_background(rd), pixel, size, ro, rd, t, closest, scattered);
         imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
         // A miss is infinitely far (as Nuke and Blender read depth); it has no surface.
         imageStore(fg_position, pixel, vec4(0.0, 0.0, 0.0, uintBitsToFloat(0x7f800000u)));
@@ -66,7 +70,7 @@ void main()
 #else
     FgShading s = fg_shade_hit(p, rd, vec3(0.0, 1.0, 0.0), t);
 #endif
-    vec3 beauty = fg_post_effects(s.color, pixel, size, ro, rd, t, closest);
+    vec3 beauty = fg_post_effects(s.color, pixel, size, ro, rd, t, closest, scattered);
     imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
     // Camera depth: along the view axis in perspective, along the ray in a panorama; metres.
     GpuView v = fg_frame.views[pc.view];

@@ -129,8 +129,9 @@ struct GpuScene {
     // The environment (FG_HAS_ENVIRONMENT): rgb its colour times intensity, w its turn about +y
     // (radians, counter-clockwise from above).
     vec4 environment;
-    // Height fog (FG_HAS_FOG): x the density's falloff per scene unit up (0: homogeneous), y the
-    // height where the density is fog_density.
+    // Fog (FG_HAS_FOG): x the density's falloff per scene unit up (0: homogeneous), y the height
+    // where the density is fog_density; z the share of the main light it scatters (0: no light
+    // shafts), w the scattering's anisotropy (Henyey-Greenstein g).
     vec4 fog_height;
 };
 

@@ -24,16 +24,17 @@ float fg_fog_depth(vec3 ro, vec3 rd, float t)
 #endif
 
 // The post effects the pack lists, and only those: scattering fog (homogeneous or height fog)
-// along the ray from ro along rd, glow from the closest approach along the ray (`closest`), the
+// along the ray from ro along rd, with the main light it scatters towards the eye (`scattered`,
+// fg_fog_light in shading.glsl), glow from the closest approach along the ray (`closest`), the
 // vignette. t < 0 is a miss.
-vec3 fg_post_effects(vec3 color, ivec2 pixel, ivec2 size, vec3 ro, vec3 rd, float t, float closest)
+vec3 fg_post_effects(vec3 color, ivec2 pixel, ivec2 size, vec3 ro, vec3 rd, float t, float closest, vec3 scattered)
 {
 #ifdef FG_HAS_GLOW
     color += fg_scene.glow_color * exp(-max(closest, 0.0) / fg_scene.glow_falloff);
 #endif
 #ifdef FG_HAS_FOG
     float distance_through = t < 0.0 ? fg_scene.far_limit : t;
-    color = mix(fg_scene.fog_color, color, exp(-fg_fog_depth(ro, rd, distance_through)));
+    color = mix(fg_scene.fog_color, color, exp(-fg_fog_depth(ro, rd, distance_through))) + scattered;
 #endif
 #ifdef FG_HAS_VIGNETTE
     // A comfort effect of the headset's frustum; a panorama has no edges to darken.

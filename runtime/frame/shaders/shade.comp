@@ -104,7 +104,11 @@ void fg_store_final(ivec2 pixel, vec3 color, vec3 ro, vec3 rd, float t)
 #ifdef FG_HAS_GLOW
     closest = imageLoad(fg_glow, pixel).x;
 #endif
-    color = fg_post_effects(color, pixel, ivec2(fg_frame.eye_size), ro, rd, t, closest);
+    vec3 scattered = vec3(0.0);
+#ifdef FG_HAS_FOG
+    scattered = fg_fog_light(ro, rd, t);
+#endif
+    color = fg_post_effects(color, pixel, ivec2(fg_frame.eye_size), ro, rd, t, closest, scattered);
     imageStore(fg_final, pixel, vec4(fg_tonemap(color) * (1.0 - fg_scene.fade), 1.0));
     if (pc.hdr != 0) imageStore(fg_hdr, pixel, vec4(color * fg_scene.exposure, 1.0 - fg_scene.fade));
 }

@@ -80,14 +80,13 @@ vec3 fg_auxiliary_light(uint i, vec3 p, vec3 rd, vec3 n, vec3 albedo)
 }
 #endif
 
-#if defined(FG_HAS_REFLECTION) || defined(FG_HAS_ENVIRONMENT)
-// A ray from the hit p, t along the eye's ray, with normal n, leaving along dir: true, with the
-// point it meets and its distance from the eye's origin, where it meets the surface by the same
-// rule as the eye's rays (the pixel's cone grown over the whole path).
-bool fg_march_from_hit(vec3 p, vec3 n, vec3 dir, float t, out vec3 q, out float total)
+#if defined(FG_HAS_REFLECTION) || defined(FG_HAS_ENVIRONMENT) || defined(FG_HAS_FOG)
+// A ray from `origin`, t along the eye's ray, leaving along dir: true, with the point it meets and
+// its distance from the eye's origin, where it meets the surface by the same rule as the eye's rays
+// (the pixel's cone grown over the whole path).
+bool fg_march_on(vec3 origin, vec3 dir, float t, out vec3 q, out float total)
 {
     float footprint = FG_EPSILON * fg_detail_tan();
-    vec3 origin = p + n * (2.0 * footprint * t + 1e-6 * fg_frame.world_scale);
     vec2 range = fg_bounds_interval(origin, dir, 0.0);
     float along = max(range.x, 0.0);
     for (int i = 0; i < FG_MAX_STEPS && along <= range.y; i++) {
@@ -98,6 +97,51 @@ bool fg_march_from_hit(vec3 p, vec3 n, vec3 dir, float t, out vec3 q, out float 
         along += d;
     }
     return false;
+}
+
+// The same from the hit p with normal n: it starts just above the surface.
+bool fg_march_from_hit(vec3 p, vec3 n, vec3 dir, float t, out vec3 q, out float total)
+{
+    float footprint = FG_EPSILON * fg_detail_tan();
+    return fg_march_on(p + n * (2.0 * footprint * t + 1e-6 * fg_frame.world_scale), dir, t, q, total);
+}
+#endif
+
+#ifdef FG_HAS_FOG
+// The main light the fog scatters towards the eye along the ray from ro along rd over t (a miss:
+// the far limit), its share fog_height.z of the light, Henyey-Greenstein's phase. With a constant
+// share, the scattering density times the transmittance integrates to 1 - T over the ray, whatever
+// the density's profile: a frame takes that, unshadowed. While samples accumulate each sample takes
+// one point of the ray, drawn in proportion to that integrand (the optical depth inverted), and
+// marches from it towards the light: the mean converges to the shadowed integral, light shafts
+// through the fractal's holes included.
+vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
+{
+    float share = fg_scene.fog_height.z;
+    if (share <= 0.0) return vec3(0.0);
+    float far = t < 0.0 ? fg_scene.far_limit : t;
+    float opaque = 1.0 - exp(-fg_fog_depth(ro, rd, far));
+    float g = fg_scene.fog_height.w;
+    float phase = (1.0 - g * g) / (4.0 * FG_PI * pow(max(1.0 + g * g - 2.0 * g * dot(fg_scene.light_dir.xyz, rd), 1e-6), 1.5));
+    vec3 light = fg_scene.light_color.rgb * share * phase * opaque;
+    if (fg_frame.area_light.z == 0.0) return light;
+    // The point whose optical depth is -ln(1 - xi (1 - T)).
+    float depth = -log(1.0 - fg_sample_square(2u).x * opaque);
+    float s = depth / max(fg_scene.fog_density, 1e-30);
+    float k = fg_scene.fog_height.x;
+    if (k > 0.0) {
+#ifdef FG_DOUBLE_SCENE
+        float y0 = float(double(ro.y) + fg_anchor().y);
+#else
+        float y0 = ro.y;
+#endif
+        float a = fg_scene.fog_density * exp(-k * (y0 - fg_scene.fog_height.y));
+        float x = k * rd.y;
+        s = abs(x * depth / a) < 1e-4 ? depth / a : -log(max(1.0 - x * depth / a, 1e-30)) / x;
+    }
+    vec3 q;
+    float total;
+    return fg_march_on(ro + rd * min(s, far), fg_scene.light_dir.xyz, min(s, far), q, total) ? vec3(0.0) : light;
 }
 #endif
 
