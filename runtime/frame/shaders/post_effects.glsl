@@ -2,24 +2,30 @@
 // shade pass (its tone map, when the pack has no post effects) and the AOV pass (the HDR beauty).
 
 #ifdef FG_HAS_FOG
-// The fog's optical depth along the ray from ro (frame coordinates) along the unit rd, over t: the
-// density times t, and for height fog the density's exponential in height integrated in closed
-// form, d e^(-k (y0 - h)) (1 - e^(-k dy t)) / (k dy), its series where k dy t is small.
+// The fog's density at the ray origin ro (frame coordinates): fog_density at the fog's height,
+// falling by e every 1 / falloff above it (height fog), the same everywhere without a falloff.
+float fg_fog_density_at(vec3 ro)
+{
+    float k = fg_scene.fog_height.x;
+    if (k <= 0.0) return fg_scene.fog_density;
+#ifdef FG_DOUBLE_SCENE
+    float y0 = float(double(ro.y) + fg_anchor().y);
+#else
+    float y0 = ro.y;
+#endif
+    return fg_scene.fog_density * exp(-k * (y0 - fg_scene.fog_height.y));
+}
+
+// The fog's optical depth along the ray from ro along the unit rd, over t: the density times t,
+// and for height fog the density's exponential in height integrated in closed form,
+// d0 (1 - e^(-k dy t)) / (k dy), its series where k dy t is small.
 float fg_fog_depth(vec3 ro, vec3 rd, float t)
 {
-    float depth = fg_scene.fog_density * t;
     float k = fg_scene.fog_height.x;
-    if (k > 0.0) {
-#ifdef FG_DOUBLE_SCENE
-        float y0 = float(double(ro.y) + fg_anchor().y);
-#else
-        float y0 = ro.y;
-#endif
-        float x = k * rd.y * t;
-        float along = abs(x) < 1e-3 ? 1.0 - 0.5 * x + x * x / 6.0 : (1.0 - exp(-x)) / x;
-        depth *= exp(-k * (y0 - fg_scene.fog_height.y)) * along;
-    }
-    return depth;
+    if (k <= 0.0) return fg_scene.fog_density * t;
+    float x = k * rd.y * t;
+    float along = abs(x) < 1e-3 ? 1.0 - 0.5 * x + x * x / 6.0 : (1.0 - exp(-x)) / x;
+    return fg_fog_density_at(ro) * t * along;
 }
 #endif
 

@@ -128,15 +128,8 @@ vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
     // The point whose optical depth is -ln(1 - xi (1 - T)).
     float depth = -log(1.0 - fg_sample_square(2u).x * opaque);
     float s = depth / max(fg_scene.fog_density, 1e-30);
-    float k = fg_scene.fog_height.x;
-    if (k > 0.0) {
-#ifdef FG_DOUBLE_SCENE
-        float y0 = float(double(ro.y) + fg_anchor().y);
-#else
-        float y0 = ro.y;
-#endif
-        float a = fg_scene.fog_density * exp(-k * (y0 - fg_scene.fog_height.y));
-        float x = k * rd.y;
+    if (fg_scene.fog_height.x > 0.0) {
+        float a = fg_fog_density_at(ro), x = fg_scene.fog_height.x * rd.y;
         s = abs(x * depth / a) < 1e-4 ? depth / a : -log(max(1.0 - x * depth / a, 1e-30)) / x;
     }
     vec3 q;
