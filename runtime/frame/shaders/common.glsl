@@ -1,6 +1,9 @@
 // Shared by every pass: the frame and scene uniforms, ray generation and the march helpers.
 // The compiler pastes this after the knob constants and before the scene's code.
 
+// Pi as the passes' float: the scene's FG_PI is a double in packs of precision "double".
+const float FG_FLOAT_PI = 3.14159265;
+
 // The frame and scene blocks: their structs are in gpu_interface.h, pasted before this file.
 layout(set = 0, binding = 0, std140) uniform FgFrame { GpuFrame fg_frame; };
 layout(set = 0, binding = 1, std140) uniform FgScene { GpuScene fg_scene; };

@@ -30,7 +30,7 @@ vec3 fg_env_world(vec3 l)
 // growing towards +x (fgplay's equirectangular panoramas).
 vec2 fg_env_uv(vec3 l)
 {
-    return vec2(0.5 + atan(l.x, -l.z) * (0.5 / FG_PI), acos(clamp(l.y, -1.0, 1.0)) * (1.0 / FG_PI));
+    return vec2(0.5 + atan(l.x, -l.z) * (0.5 / FG_FLOAT_PI), acos(clamp(l.y, -1.0, 1.0)) * (1.0 / FG_FLOAT_PI));
 }
 
 vec3 fg_env_texel(uint i, uint j)
@@ -94,7 +94,7 @@ float fg_environment_pdf(vec3 d)
     uint table = fg_env_row_table(j);
     float column = fg_env_float(table + i + 1u) - fg_env_float(table + i);
     float sin_theta = max(sqrt(max(1.0 - l.y * l.y, 0.0)), 1e-6);
-    return row * column * float(w * h) / (2.0 * FG_PI * FG_PI * sin_theta);
+    return row * column * float(w * h) / (2.0 * FG_FLOAT_PI * FG_FLOAT_PI * sin_theta);
 }
 
 // A world direction drawn in proportion to the image's brightness times sin(theta), from xi in
@@ -109,7 +109,7 @@ vec3 fg_environment_sample(vec2 xi)
     uint i = fg_env_search(table, w, xi.x);
     float c0 = fg_env_float(table + i), c1 = fg_env_float(table + i + 1u);
     float u = (float(i) + clamp((xi.x - c0) / max(c1 - c0, 1e-30), 0.0, 1.0)) / float(w);
-    float theta = v * FG_PI, phi = (u - 0.5) * 2.0 * FG_PI;
+    float theta = v * FG_FLOAT_PI, phi = (u - 0.5) * 2.0 * FG_FLOAT_PI;
     return fg_env_world(vec3(sin(theta) * sin(phi), cos(theta), -sin(theta) * cos(phi)));
 }
 #endif

@@ -92,7 +92,7 @@ bool fg_march_on(vec3 origin, vec3 dir, float t, out vec3 q, out float total)
     for (int i = 0; i < FG_MAX_STEPS && along <= range.y; i++) {
         q = origin + dir * along;
         total = t + along;
-        float d = fg_scene_distance(q) * FG_STEP_SCALE;
+        float d = float(fg_scene_distance(q)) * FG_STEP_SCALE;
         if (d < footprint * FG_STEP_FRACTION * total) return true;
         along += d;
     }
@@ -122,7 +122,7 @@ vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
     float far = t < 0.0 ? fg_scene.far_limit : t;
     float opaque = 1.0 - exp(-fg_fog_depth(ro, rd, far));
     float g = fg_scene.fog_height.w;
-    float phase = (1.0 - g * g) / (4.0 * FG_PI * pow(max(1.0 + g * g - 2.0 * g * dot(fg_scene.light_dir.xyz, rd), 1e-6), 1.5));
+    float phase = (1.0 - g * g) / (4.0 * FG_FLOAT_PI * pow(max(1.0 + g * g - 2.0 * g * dot(fg_scene.light_dir.xyz, rd), 1e-6), 1.5));
     vec3 light = fg_scene.light_color.rgb * share * phase * opaque;
     if (fg_frame.area_light.z == 0.0) return light;
     // The point whose optical depth is -ln(1 - xi (1 - T)).
@@ -159,7 +159,7 @@ vec3 fg_environment_light(vec3 p, vec3 n, float t, float ao)
         float b = n.x * n.y * a;
         vec3 tangent = vec3(1.0 + side * n.x * n.x * a, side * b, -side * n.x);
         vec3 bitangent = vec3(b, side + n.y * n.y * a, -n.y);
-        float r = sqrt(2.0 * xi.x - 1.0), phi = 2.0 * FG_PI * xi.y;
+        float r = sqrt(2.0 * xi.x - 1.0), phi = 2.0 * FG_FLOAT_PI * xi.y;
         dir = tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + n * sqrt(max(2.0 - 2.0 * xi.x, 0.0));
     }
     float cosine = dot(n, dir);
@@ -167,8 +167,8 @@ vec3 fg_environment_light(vec3 p, vec3 n, float t, float ao)
     vec3 q;
     float total;
     if (fg_march_from_hit(p, n, dir, t, q, total)) return vec3(0.0);
-    float pdf = 0.5 * fg_environment_pdf(dir) + 0.5 * cosine / FG_PI;
-    return fg_environment_radiance(dir) * (cosine / FG_PI / pdf);
+    float pdf = 0.5 * fg_environment_pdf(dir) + 0.5 * cosine / FG_FLOAT_PI;
+    return fg_environment_radiance(dir) * (cosine / FG_FLOAT_PI / pdf);
 }
 #endif
 
