@@ -28,21 +28,15 @@ namespace {
 constexpr std::uint32_t kSize = 96;
 constexpr double kPi = std::numbers::pi;
 
-std::size_t aov_index(const std::string& name) {
-    for (std::size_t i = 0; i < aov_images().size(); ++i)
-        if (aov_images()[i].name == name) return i;
-    throw std::logic_error("no AOV image " + name);
-}
-
 // Channel c of pixel i of the left eye's HDR beauty, and its hit distance (not finite: a miss).
 double beauty(const RenderedFrame& f, std::size_t i, int c) {
     Imath::half h;
-    std::memcpy(&h, f.aovs_left[aov_index("beauty")].data() + (4 * i + c) * sizeof h, sizeof h);
+    std::memcpy(&h, f.aovs_left[test::aov_index("beauty")].data() + (4 * i + c) * sizeof h, sizeof h);
     return static_cast<double>(h);
 }
 bool hit(const RenderedFrame& f, std::size_t i) {
     float w;
-    std::memcpy(&w, f.aovs_left[aov_index("position")].data() + (4 * i + 3) * sizeof w, sizeof w);
+    std::memcpy(&w, f.aovs_left[test::aov_index("position")].data() + (4 * i + 3) * sizeof w, sizeof w);
     return std::isfinite(w);
 }
 

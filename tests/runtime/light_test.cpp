@@ -24,16 +24,9 @@ namespace {
 constexpr std::uint32_t kSize = 160;
 constexpr double kFovDeg = 40.0;
 
-// Where the AOV image `name` is in aov_images() (and in a frame's aovs).
-std::size_t aov_index(const std::string& name) {
-    for (std::size_t i = 0; i < aov_images().size(); ++i)
-        if (aov_images()[i].name == name) return i;
-    throw std::logic_error("no AOV image " + name);
-}
-
 // The `light` AOV of the left eye as floats, four per pixel.
 std::vector<float> light_aov(const RenderedFrame& f) {
-    const auto& bytes = f.aovs_left.at(aov_index("light"));
+    const auto& bytes = f.aovs_left.at(test::aov_index("light"));
     std::vector<float> out(bytes.size() / sizeof(Imath::half));
     for (std::size_t i = 0; i < out.size(); ++i) {
         Imath::half h;
@@ -52,7 +45,7 @@ double half_at(const std::vector<std::byte>& bytes, std::size_t i) {
 
 // The `position` AOV: xyz world position, w the distance along the ray (not finite: a miss).
 std::vector<float> world_positions(const RenderedFrame& f) {
-    const auto& bytes = f.aovs_left[aov_index("position")];
+    const auto& bytes = f.aovs_left[test::aov_index("position")];
     std::vector<float> world(bytes.size() / sizeof(float));
     std::memcpy(world.data(), bytes.data(), bytes.size());
     return world;
@@ -296,7 +289,7 @@ TEST_F(Light, marched_ao_beside_a_sphere_on_a_plane_is_the_analytic_occlusion) {
         }})", radius, kFovDeg, never_negative ? "outside.value" : "both.distance"));
         RenderedFrame f = render(pack);
         const std::vector<float> world = world_positions(f);
-        const auto& normals = f.aovs_left[aov_index("normal")];
+        const auto& normals = f.aovs_left[test::aov_index("normal")];
         double worst = 0.0, worst_d = 0.0;
         std::size_t checked = 0;
         for (std::size_t i = 0; i < kSize * kSize; ++i) {
@@ -337,7 +330,7 @@ TEST_F(Light, a_glass_sphere_reflects_the_background_by_fresnels_law) {
                 "background": [{2}, {3}, {4}]}}
     }})", ior, kFovDeg, background.x, background.y, background.z));
     RenderedFrame f = render(pack);
-    const std::size_t beauty = aov_index("beauty"), normal = aov_index("normal");
+    const std::size_t beauty = test::aov_index("beauty"), normal = test::aov_index("normal");
     const std::vector<float> world = world_positions(f);
     double worst = 0.0, worst_cos = 0.0;
     std::size_t checked = 0;
@@ -385,8 +378,8 @@ TEST_F(Light, an_auxiliary_directional_light_lights_as_the_main_one_does) {
     const RenderedFrame main_light = render(pack_lit_by(R"("color": [1.2, 1.0, 0.8])"));
     const RenderedFrame auxiliary = render(pack_lit_by(
         R"("color": 0, "auxiliary": [{"direction": [0.70710678, 0.70710678, 0], "color": [1.2, 1.0, 0.8]}])"));
-    const auto& a = main_light.aovs_left[aov_index("beauty")];
-    const auto& b = auxiliary.aovs_left[aov_index("beauty")];
+    const auto& a = main_light.aovs_left[test::aov_index("beauty")];
+    const auto& b = auxiliary.aovs_left[test::aov_index("beauty")];
     double worst = 0.0, brightest = 0.0;
     for (std::size_t i = 0; i < kSize * kSize * 4; ++i) {
         if (i % 4 == 3) continue;
@@ -426,7 +419,7 @@ TEST_F(Light, a_point_light_falls_off_with_the_square_of_its_distance_and_shadow
     }})", light_height, ball_height, ball_radius, intensity, albedo));
     RenderedFrame f = render(pack);
     const std::vector<float> world = world_positions(f);
-    const auto& beauty = f.aovs_left[aov_index("beauty")];
+    const auto& beauty = f.aovs_left[test::aov_index("beauty")];
     // The tangent cone from the light to the ball meets the plane at this radius.
     const double shadow_radius = light_height * std::tan(std::asin(ball_radius / (light_height - ball_height)));
     const double pixel = 2.0 * 1.9 / kSize;

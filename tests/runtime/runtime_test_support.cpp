@@ -5,8 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include <cstring>
+
+#include "frame/aov_images.h"
 
 namespace fg::test {
 
@@ -33,6 +36,12 @@ Pack compile_pack(const std::string& graph_text) {
     auto pack = read_pack(bytes, diag);
     if (!pack) throw std::runtime_error("pack read failed:\n" + diag.format());
     return std::move(*pack);
+}
+
+std::size_t aov_index(const std::string& name) {
+    for (std::size_t i = 0; i < aov_images().size(); ++i)
+        if (aov_images()[i].name == name) return i;
+    throw std::logic_error("no AOV image " + name);
 }
 
 FrameSettings aov_frame(std::uint32_t size) {

@@ -27,6 +27,8 @@ Pack compile_pack(const std::string& graph_text);
 // camera (no IPD): what tests that read a view's AOVs against closed forms render.
 FrameSettings aov_frame(std::uint32_t size);
 StereoSettings eye_at_camera(std::uint32_t size);
+// Where the AOV image `name` is in aov_images() (and in a frame's aovs); std::logic_error if nowhere.
+std::size_t aov_index(const std::string& name);
 // The CPU twin of a pack's graph.
 struct CpuScene {
     IrGraph ir;
