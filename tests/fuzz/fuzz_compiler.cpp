@@ -152,7 +152,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text = graph.dump();
     fg::Diagnostics diag;
     try {
-        auto result = fg::compile_graph(text, library, {}, diag);
+        // A scene may name an environment image: only inside the working folder, as the studio
+        // allows, so that no input makes the fuzzer read a device or another file system.
+        fg::CompileOptions options;
+        options.folder_confined = true;
+        auto result = fg::compile_graph(text, library, options, diag);
         if (!result) {
             if (!diag.has_errors()) fail("compile_graph refused the graph without an error", graph, diag);
             for (const auto& d : diag.items()) {
