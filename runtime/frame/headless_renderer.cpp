@@ -75,11 +75,11 @@ RenderedFrame HeadlessRenderer::render(const HeadPose& head, double time, std::u
     };
     download_aovs(left, out.aovs_left);
     if (graph().find_image("hdr." + left)) out.hdr_left = floats(executor_->download("hdr." + left));
-    if (!mono && graph().find_image("hdr.right")) out.hdr_right = floats(executor_->download("hdr.right"));
     if (!mono) {
         out.right = rgba8_from_bytes(executor_->download("final.right"), g.output_width, g.output_height);
         out.depth_right = floats(executor_->download("depth.right"));
         download_aovs("right", out.aovs_right);
+        if (graph().find_image("hdr.right")) out.hdr_right = floats(executor_->download("hdr.right"));
     }
     return out;
 }

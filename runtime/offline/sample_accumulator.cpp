@@ -45,12 +45,11 @@ void SampleAccumulator::add(const Rgba8Image& sample, const SampledTiles* sample
 }
 
 Rgba8Image SampleAccumulator::mean() const {
+    if (!hdr_sum_.empty()) return display_picture(hdr_mean(), width_, height_);
     Rgba8Image out{width_, height_, std::vector<std::uint8_t>(sum_.size())};
     for (std::size_t i = 0; i < sum_.size(); ++i) {
         const double n = std::max<std::uint32_t>(counts_[i / 4], 1);
-        if (i % 4 == 3) out.pixels[i] = static_cast<std::uint8_t>(std::lround(sum_[i] / n));
-        else if (hdr_sum_.empty()) out.pixels[i] = linear_to_srgb8(sum_[i] / n);
-        else out.pixels[i] = display_level(tonemap_beauty(hdr_sum_[i] / n) * (hdr_sum_[i - i % 4 + 3] / n));
+        out.pixels[i] = i % 4 == 3 ? static_cast<std::uint8_t>(std::lround(sum_[i] / n)) : linear_to_srgb8(sum_[i] / n);
     }
     return out;
 }
