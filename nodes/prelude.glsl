@@ -67,6 +67,19 @@ vec3 fg_rotate_axis(vec3 p, vec3 axis, float angle)
     return p * c + cross(axis, p) * s + axis * (dot(axis, p) * (1.0 - c));
 }
 
+// Fresnel's reflectance of a smooth boundary into a medium eta times as dense (eta = n_t / n_i), both
+// polarisations averaged, at the cosine cos_i of the angle of incidence: 1 past the critical angle.
+float fg_fresnel_dielectric(float cos_i, float eta)
+{
+    float c = clamp(cos_i, 0.0, 1.0);
+    float sin_t2 = (1.0 - c * c) / (eta * eta);
+    if (sin_t2 >= 1.0) return 1.0;
+    float cos_t = sqrt(1.0 - sin_t2);
+    float rs = (c - eta * cos_t) / max(c + eta * cos_t, 1e-12);
+    float rp = (cos_t - eta * c) / max(cos_t + eta * c, 1e-12);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
 // iq's gain: a symmetric contrast curve used by the one-sample lighting tricks.
 float fg_gain(float x, float k)
 {

@@ -29,6 +29,7 @@ EffectSet find_effects(const IrGraph& ir) {
     if (ir.outputs.count("specular")) e.add(Effect::Specular);
     // The bounce leaves along the shade pass's own normal.
     if (ir.outputs.count("reflection")) e.add(Effect::Reflection), e.add(Effect::Normals);
+    if (ir.outputs.count("transmission")) e.add(Effect::Refraction), e.add(Effect::Normals);
 
     const auto& s = ir.scene;
     if (s.fog) e.add(Effect::Fog);

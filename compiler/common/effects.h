@@ -29,6 +29,7 @@ enum class Effect : std::uint32_t {
     Reflection,          // one mirror bounce (light.reflection): the shade pass marches the reflected ray
     Lights,              // auxiliary lights (scene.light.auxiliary): the light's terms again for each
     Environment,         // light from a lat-long HDR image or a uniform sky (scene.environment)
+    Refraction,          // glass (light.refraction): the shade pass bends the ray through the body and out
     Count
 };
 

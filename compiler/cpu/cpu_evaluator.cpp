@@ -222,6 +222,9 @@ CpuSurface CpuEvaluator::surface(const glm::dvec3& p, const CpuShadeInputs& shad
     if (auto v = get("shadow")) s.shadow = v->f();
     if (auto v = get("specular")) s.specular = v->v3();
     if (auto v = get("reflection")) s.reflection = v->v3();
+    if (auto v = get("transmission")) s.transmission = v->v3();
+    if (auto v = get("ior")) s.ior = v->f();
+    if (auto v = get("absorption")) s.absorption = v->v3();
     return s;
 }
 

@@ -28,6 +28,9 @@ struct CpuSurface {
     glm::dvec3 emission{0.0};
     glm::dvec3 specular{0.0};
     glm::dvec3 reflection{0.0};
+    glm::dvec3 transmission{0.0};
+    double ior = 1.5;
+    glm::dvec3 absorption{0.0};
 };
 
 class CpuEvaluator {

@@ -26,6 +26,9 @@ const std::vector<GraphOutputSpec>& graph_output_specs() {
         {"shadow", ValueType::Float, false, "how much of the light reaches the point, in [0, 1] (light.soft_shadow); scales diffuse and specular"},
         {"specular", ValueType::Vec3, false, "specular reflectance towards the camera (light.specular), times the light's colour and the shadow"},
         {"reflection", ValueType::Vec3, false, "mirror reflectance (light.reflection): the share of the scene seen in the mirror direction that the point reflects"},
+        {"transmission", ValueType::Vec3, false, "the share of the light refracted through the body that the point passes on (light.refraction)"},
+        {"ior", ValueType::Float, false, "the body's refractive index where it refracts; unbound: 1.5"},
+        {"absorption", ValueType::Vec3, false, "absorption per world unit inside a refracting body (Beer-Lambert); unbound: 0"},
     };
     return specs;
 }

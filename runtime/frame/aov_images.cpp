@@ -5,7 +5,7 @@
 namespace fg {
 
 std::span<const AovImage> aov_images() {
-    static constexpr std::array<AovImage, 7> images{{
+    static constexpr std::array<AovImage, 8> images{{
         {"fg_beauty", "beauty", ImageFormat::RGBA16F, "HDR beauty before the tone map"},
         {"fg_position", "position", ImageFormat::RGBA32F, "world position, camera depth in metres"},
         {"fg_normal", "normal", ImageFormat::RGBA16F, "normal, AO"},
@@ -13,6 +13,7 @@ std::span<const AovImage> aov_images() {
         {"fg_trap", "trap", ImageFormat::RGBA16F, "orbit trap"},
         {"fg_light", "light", ImageFormat::RGBA16F, "specular reflectance, shadow"},
         {"fg_reflection", "reflection", ImageFormat::RGBA16F, "the colour the mirror bounce adds"},
+        {"fg_refraction", "refraction", ImageFormat::RGBA16F, "the colour the light through glass adds"},
     }};
     return images;
 }
@@ -21,6 +22,7 @@ bool aov_image_needed(const AovImage& image, const EffectSet& effects) {
     const std::string_view name = image.name;
     if (name == "light") return effects.has(Effect::Shadow) || effects.has(Effect::Specular);
     if (name == "reflection") return effects.has(Effect::Reflection);
+    if (name == "refraction") return effects.has(Effect::Refraction);
     return true;
 }
 

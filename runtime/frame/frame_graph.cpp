@@ -243,7 +243,8 @@ FrameGraph FrameGraph::build(const PackManifest& manifest, const FrameSettings& 
     const bool has_history_knob = manifest.find_spec("shade_history") != nullptr;
     g.shade_history = has_history_knob && knob("shade_history") > 0.0 && !manifest.animated && !g.is_panorama() &&
                       manifest.precision == "float" && !g.effects.has(Effect::Rim) && !g.effects.has(Effect::Subsurface) &&
-                      !g.effects.has(Effect::Specular) && !g.effects.has(Effect::Reflection);
+                      !g.effects.has(Effect::Specular) && !g.effects.has(Effect::Reflection) &&
+                      !g.effects.has(Effect::Refraction);
     if (has_history_knob && !g.shade_history) g.settings.knobs["shade_history"] = 0.0;
     // Temporal anti-aliasing reprojects each hit into the previous frame: the scene must stay put,
     // and float origins must not move with the camera. Otherwise frames are plain, unjittered.

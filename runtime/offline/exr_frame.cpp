@@ -58,7 +58,8 @@ constexpr Channel kChannels[] = {
     {"specular.R", "light", 0, Imf::HALF}, {"specular.G", "light", 1, Imf::HALF}, {"specular.B", "light", 2, Imf::HALF},
     {"shadow.Y", "light", 3, Imf::HALF},
     {"reflection.R", "reflection", 0, Imf::HALF}, {"reflection.G", "reflection", 1, Imf::HALF},
-    {"reflection.B", "reflection", 2, Imf::HALF},
+    {"reflection.B", "reflection", 2, Imf::HALF}, {"refraction.R", "refraction", 0, Imf::HALF},
+    {"refraction.G", "refraction", 1, Imf::HALF}, {"refraction.B", "refraction", 2, Imf::HALF},
 };
 
 Imath::M44f to_imath(const ExrMatrix& rows) {

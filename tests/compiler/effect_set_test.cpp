@@ -117,3 +117,18 @@ TEST(EffectSet, scene_settings_turn_on_vignette_and_background_gradient) {
     EXPECT_NE(glsl(r, "shade").find("#define FG_HAS_VIGNETTE"), std::string::npos);
     EXPECT_FALSE(has_pass(r, "post"));
 }
+
+TEST(EffectSet, glass_is_compiled_only_where_the_graph_binds_a_transmission) {
+    auto plain = compile(minimal_graph());
+    EXPECT_FALSE(plain.manifest.effects.has(Effect::Refraction));
+    EXPECT_EQ(glsl(plain, "shade").find("#define FG_HAS_REFRACTION"), std::string::npos);
+    auto g = minimal_graph();
+    g["nodes"].push_back({{"id", "glass"}, {"type", "light.refraction"}});
+    g["outputs"]["transmission"] = "glass.transmission";
+    g["outputs"]["ior"] = "glass.ior";
+    auto r = compile(g);
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Refraction));
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Normals)) << "the ray bends about the shade pass's normal";
+    EXPECT_NE(glsl(r, "shade").find("#define FG_HAS_REFRACTION"), std::string::npos);
+    EXPECT_NE(glsl(r, "aov").find("#define FG_HAS_REFRACTION"), std::string::npos);
+}

@@ -6,7 +6,7 @@
 //! include-after-scene: shading.glsl
 // The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
 // beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse
-// factor, the orbit trap, the specular reflectance, the shadow and the mirror bounce's colour. Runs only when an offline render asks for them; it shades each hit
+// factor, the orbit trap, the specular reflectance, the shadow, the mirror bounce's colour and the light through glass. Runs only when an offline render asks for them; it shades each hit
 // once more with the shade pass's own functions, so the beauty is the picture's colour.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -25,6 +25,9 @@ layout(set = 0, binding = 10, rgba16f) uniform writeonly image2D fg_light;     /
 #endif
 #ifdef FG_HAS_REFLECTION
 layout(set = 0, binding = 11, rgba16f) uniform writeonly image2D fg_reflection;   // rgb the mirror bounce's colour
+#endif
+#ifdef FG_HAS_REFRACTION
+layout(set = 0, binding = 18, rgba16f) uniform writeonly image2D fg_refraction;   // rgb the light through glass
 #endif
 layout(push_constant) uniform FgAovPush { AovPush pc; };
 
@@ -60,6 +63,9 @@ void main()
 #ifdef FG_HAS_REFLECTION
         imageStore(fg_reflection, pixel, vec4(0.0));
 #endif
+#ifdef FG_HAS_REFRACTION
+        imageStore(fg_refraction, pixel, vec4(0.0));
+#endif
         return;
     }
     vec3 p = ro + rd * t;
@@ -89,5 +95,8 @@ void main()
 #endif
 #ifdef FG_HAS_REFLECTION
     imageStore(fg_reflection, pixel, vec4(s.reflected, 0.0));
+#endif
+#ifdef FG_HAS_REFRACTION
+    imageStore(fg_refraction, pixel, vec4(s.refracted, 0.0));
 #endif
 }

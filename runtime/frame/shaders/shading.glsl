@@ -53,6 +53,7 @@ struct FgShading {
     float shadow;    // how much of the light reaches the point
     vec3 specular;   // the specular reflectance towards the camera
     vec3 reflected;  // the colour the mirror bounce adds
+    vec3 refracted;  // the colour the light through a glass body adds
     FgSurface surface;   // the graph's outputs it came from
 };
 
@@ -80,7 +81,7 @@ vec3 fg_auxiliary_light(uint i, vec3 p, vec3 rd, vec3 n, vec3 albedo)
 }
 #endif
 
-#if defined(FG_HAS_REFLECTION) || defined(FG_HAS_ENVIRONMENT) || defined(FG_HAS_FOG)
+#if defined(FG_HAS_REFLECTION) || defined(FG_HAS_ENVIRONMENT) || defined(FG_HAS_FOG) || defined(FG_HAS_REFRACTION)
 // A ray from `origin`, t along the eye's ray, leaving along dir: true, with the point it meets and
 // its distance from the eye's origin, where it meets the surface by the same rule as the eye's rays
 // (the pixel's cone grown over the whole path).
@@ -218,7 +219,7 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n, float t)
 #ifdef FG_HAS_EMISSION
     color += s.emission;
 #endif
-    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, vec3(0.0), s);
+    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, vec3(0.0), vec3(0.0), s);
 }
 
 #ifdef FG_HAS_REFLECTION
@@ -235,14 +236,102 @@ vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
 }
 #endif
 
+#ifdef FG_HAS_REFRACTION
+// Marches through glass a ray takes at most: one a body it crosses, one more each internal bounce.
+const int FG_GLASS_SEGMENTS = 6;
+
+// A ray inside a body from `origin` (t travelled from the eye) along dir: true, with the point just
+// inside where the body ends and the length inside, where the distance (negative inside) comes back
+// within the pixel's cone grown over the whole path, the rule the eye's rays meet surfaces by.
+bool fg_march_inside(vec3 origin, vec3 dir, float t, out vec3 q, out float along)
+{
+    float footprint = FG_EPSILON * fg_detail_tan();
+    along = 0.0;
+    for (int i = 0; i < FG_MAX_STEPS; i++) {
+        q = origin + dir * along;
+        float d = -float(fg_scene_distance(q)) * FG_STEP_SCALE;
+        if (d < footprint * FG_STEP_FRACTION * (t + along)) return true;
+        along += d;
+    }
+    return false;
+}
+
+// How far below a surface t from the eye a ray starts so that it does not meet that surface again.
+float fg_surface_offset(float t)
+{
+    return 2.0 * FG_EPSILON * fg_detail_tan() * t + 1e-6 * fg_frame.world_scale;
+}
+
+// The light that comes through glass from the hit p (t along rd, normal n, the graph's outputs
+// there): the ray bends in by Snell's law, loses exp(-absorption * length) inside, and at the far
+// side bends out or, past the critical angle, reflects back inside. In a frame the exit passes on
+// its Fresnel transmission; while samples accumulate it reflects inside as often as Fresnel says and
+// passes on all of the rest, so the mean counts every internal path. Out of the body the ray takes
+// the direct terms of what it meets, and goes on through it where that is glass too, or the
+// background.
+vec3 fg_refracted_light(vec3 p, vec3 rd, vec3 n, float t, FgSurface surface)
+{
+    bool sampling = fg_frame.area_light.z != 0.0;
+    vec3 light = vec3(0.0), weight = vec3(1.0);
+    float ior = surface.ior;
+    vec3 absorption = surface.absorption;
+    vec3 dir = refract(rd, n, 1.0 / ior);
+    vec3 from = p;                              // where the ray entered or last reflected
+    vec3 at = p - n * fg_surface_offset(t);     // where its march starts, below that surface
+    for (int segment = 0; segment < FG_GLASS_SEGMENTS; segment++) {
+        vec3 q;
+        float along;
+        if (!fg_march_inside(at, dir, t, q, along)) return light;
+        // The length inside, surface to surface: `from` lies short of its surface outside and q
+        // short of its own inside, by the same rule, so the two errors cancel (the march's length
+        // would miss the start's offset: 1.1 % more light through the refraction test's red ball).
+        float inside = distance(from, q);
+        weight *= exp(-absorption * inside);
+        t += inside;
+        vec3 m = fg_surface_normal(q, t);   // outwards, at the far side
+        vec3 out_dir = refract(dir, -m, ior);
+        float reflectance = float(fg_fresnel_dielectric(dot(dir, m), 1.0 / ior));
+        bool back = out_dir == vec3(0.0);   // total internal reflection
+        if (!back && sampling) back = fg_sample_square(3u + uint(segment)).x < reflectance;
+        if (back) {
+            dir = reflect(dir, m);
+            from = q;
+            at = q - m * fg_surface_offset(t);
+            continue;
+        }
+        if (!sampling) weight *= 1.0 - reflectance;
+        vec3 hit;
+        float total;
+        if (!fg_march_from_hit(q, m, out_dir, t, hit, total)) return light + weight * fg_background(out_dir);
+        vec3 normal = fg_surface_normal(hit, total);
+        FgShading met = fg_shade_direct(hit, out_dir, normal, total);
+        light += weight * met.color;
+        if (met.surface.transmission == vec3(0.0)) return light;
+        // Glass again: into it.
+        weight *= met.surface.transmission;
+        ior = met.surface.ior;
+        absorption = met.surface.absorption;
+        dir = refract(out_dir, normal, 1.0 / ior);
+        from = hit;
+        at = hit - normal * fg_surface_offset(total);
+        t = total;
+    }
+    return light;
+}
+#endif
+
 // Shades the hit p, t along rd, with normal n: its direct terms, and where the graph reflects, the
-// mirror bounce weighted by its reflectance.
+// mirror bounce weighted by its reflectance; where it refracts, the light through the body.
 FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n, float t)
 {
     FgShading s = fg_shade_direct(p, rd, n, t);
 #ifdef FG_HAS_REFLECTION
     s.reflected = s.surface.reflection * fg_reflected_light(p, rd, n, t);
     s.color += s.reflected;
+#endif
+#ifdef FG_HAS_REFRACTION
+    s.refracted = s.surface.transmission * fg_refracted_light(p, rd, n, t, s.surface);
+    s.color += s.refracted;
 #endif
     return s;
 }
