@@ -326,12 +326,17 @@ FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n, float t)
 {
     FgShading s = fg_shade_direct(p, rd, n, t);
 #ifdef FG_HAS_REFLECTION
-    s.reflected = s.surface.reflection * fg_reflected_light(p, rd, n, t);
-    s.color += s.reflected;
+    // Only where the graph reflects: one graph often holds a mirror and surfaces that are not.
+    if (s.surface.reflection != vec3(0.0)) {
+        s.reflected = s.surface.reflection * fg_reflected_light(p, rd, n, t);
+        s.color += s.reflected;
+    }
 #endif
 #ifdef FG_HAS_REFRACTION
-    s.refracted = s.surface.transmission * fg_refracted_light(p, rd, n, t, s.surface);
-    s.color += s.refracted;
+    if (s.surface.transmission != vec3(0.0)) {
+        s.refracted = s.surface.transmission * fg_refracted_light(p, rd, n, t, s.surface);
+        s.color += s.refracted;
+    }
 #endif
     return s;
 }
