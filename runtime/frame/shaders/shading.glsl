@@ -58,24 +58,34 @@ struct FgShading {
 };
 
 #ifdef FG_HAS_LIGHTS
-// What auxiliary light i adds at the hit p seen along rd: the graph's diffuse, shadow and
-// specular evaluated towards it; a point light's falls off with the square of its distance.
-vec3 fg_auxiliary_light(uint i, vec3 p, vec3 rd, vec3 n, vec3 albedo)
+// Auxiliary light i seen from the point x: the unit direction towards it, how far it is, and the
+// light it brings there (a point light's falls off with the square of its distance).
+vec3 fg_auxiliary_towards(uint i, vec3 x, out vec3 towards, out float distance)
 {
     vec4 light = fg_scene.auxiliary_light[i];
     vec3 radiance = fg_scene.auxiliary_color[i].rgb;
-    vec3 towards = light.xyz;
-    float distance = FG_DIRECTIONAL_LIGHT_DISTANCE;
+    towards = light.xyz;
+    distance = FG_DIRECTIONAL_LIGHT_DISTANCE;
     if (light.w > 0.5) {
 #ifdef FG_DOUBLE_SCENE
-        vec3 offset = vec3(dvec3(light.xyz) - fg_anchor()) - p;
+        vec3 offset = vec3(dvec3(light.xyz) - fg_anchor()) - x;
 #else
-        vec3 offset = light.xyz - p;
+        vec3 offset = light.xyz - x;
 #endif
         distance = max(length(offset), 1e-20);
         towards = offset / distance;
         radiance /= distance * distance;
     }
+    return radiance;
+}
+
+// What auxiliary light i adds at the hit p seen along rd: the graph's diffuse, shadow and
+// specular evaluated towards it.
+vec3 fg_auxiliary_light(uint i, vec3 p, vec3 rd, vec3 n, vec3 albedo)
+{
+    vec3 towards;
+    float distance;
+    vec3 radiance = fg_auxiliary_towards(i, p, towards, distance);
     FgLightTerms l = fg_scene_light_terms(p, -rd, n, towards, distance);
     return radiance * (albedo * l.diffuse + l.specular) * l.shadow;
 }
@@ -109,33 +119,97 @@ bool fg_march_from_hit(vec3 p, vec3 n, vec3 dir, float t, out vec3 q, out float 
 #endif
 
 #ifdef FG_HAS_FOG
-// The main light the fog scatters towards the eye along the ray from ro along rd over t (a miss:
-// the far limit), its share fog_height.z of the light, Henyey-Greenstein's phase. With a constant
-// share, the scattering density times the transmittance integrates to 1 - T over the ray, whatever
-// the density's profile: a frame takes that, unshadowed. While samples accumulate each sample takes
-// one point of the ray, drawn in proportion to that integrand (the optical depth inverted), and
-// marches from it towards the light: the mean converges to the shadowed integral, light shafts
-// through the fractal's holes included.
+// Henyey-Greenstein's phase of the fog (anisotropy fog_height.w) for light arriving from `towards`
+// and leaving along rd.
+float fg_fog_phase(vec3 towards, vec3 rd)
+{
+    float g = fg_scene.fog_height.w;
+    return (1.0 - g * g) / (4.0 * FG_FLOAT_PI * pow(max(1.0 + g * g - 2.0 * g * dot(towards, rd), 1e-6), 1.5));
+}
+
+// How far along the ray from ro along rd the fog has taken the share u of the light (1 - T = u):
+// the optical depth -ln(1 - u), inverted.
+float fg_fog_at_share(vec3 ro, vec3 rd, float u)
+{
+    float depth = -log(1.0 - u);
+    float s = depth / max(fg_scene.fog_density, 1e-30);
+    if (fg_scene.fog_height.x > 0.0) {
+        float a = fg_fog_density_at(ro), x = fg_scene.fog_height.x * rd.y;
+        s = abs(x * depth / a) < 1e-4 ? depth / a : -log(max(1.0 - x * depth / a, 1e-30)) / x;
+    }
+    return s;
+}
+
+#ifdef FG_HAS_LIGHTS
+// Points a frame integrates a point light's scattering over.
+const int FG_FOG_LIGHT_POINTS = 16;
+
+// What the fog scatters towards the eye of auxiliary light i along the ray from ro along rd over
+// `far`, unshadowed. A directional light's is share * phase * (1 - T), as the main light's. A point
+// light's falls off along the ray as 1 / d^2: seen by the angle from the ray's point nearest it
+// (equiangular, Kulla and Fajardo 2012) the fall-off cancels against the stretch of the ray, and
+// what is left, density * T * phase, is smooth, so a few evenly spread angles take the integral.
+vec3 fg_fog_auxiliary(uint i, vec3 ro, vec3 rd, float far, float opaque)
+{
+    float share = fg_scene.fog_height.z;
+    vec3 towards;
+    float distance;
+    vec3 radiance = fg_auxiliary_towards(i, ro, towards, distance);
+    if (fg_scene.auxiliary_light[i].w <= 0.5) return radiance * (share * fg_fog_phase(towards, rd) * opaque);
+    vec3 offset = towards * distance;
+    float nearest = dot(offset, rd);
+    float h = max(length(offset - rd * nearest), 1e-6 * fg_frame.world_scale);
+    float first = atan(-nearest, h), last = atan(far - nearest, h);
+    float step = (last - first) / float(FG_FOG_LIGHT_POINTS);
+    vec3 light = vec3(0.0);
+    for (int k = 0; k < FG_FOG_LIGHT_POINTS; k++) {
+        float s = nearest + h * tan(first + (float(k) + 0.5) * step);
+        vec3 x = ro + rd * s;
+        vec3 brought = fg_auxiliary_towards(i, x, towards, distance);
+        // I / d^2 ds = I / h dtheta: the radiance times d^2 / h.
+        float scattering = fg_fog_density_at(x) * exp(-fg_fog_depth(ro, rd, s));
+        light += brought * (distance * distance / h * step * scattering * share * fg_fog_phase(towards, rd));
+    }
+    return light;
+}
+#endif
+
+// The light the fog scatters towards the eye along the ray from ro along rd over t (a miss: the far
+// limit), its share fog_height.z of each light. With a constant share, the scattering density times
+// the transmittance integrates to 1 - T over the ray, whatever the density's profile: a frame takes
+// that for the main light and the auxiliary lights, unshadowed (fg_fog_auxiliary). While samples accumulate each
+// sample takes one point of the ray, drawn in proportion to that integrand (the optical depth
+// inverted), and marches from it towards each light: the mean converges to the shadowed integral,
+// light shafts through the fractal's holes included.
 vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
 {
     float share = fg_scene.fog_height.z;
     if (share <= 0.0) return vec3(0.0);
     float far = t < 0.0 ? fg_scene.far_limit : t;
     float opaque = 1.0 - exp(-fg_fog_depth(ro, rd, far));
-    float g = fg_scene.fog_height.w;
-    float phase = (1.0 - g * g) / (4.0 * FG_FLOAT_PI * pow(max(1.0 + g * g - 2.0 * g * dot(fg_scene.light_dir.xyz, rd), 1e-6), 1.5));
-    vec3 light = fg_scene.light_color.rgb * share * phase * opaque;
-    if (fg_frame.area_light.z == 0.0) return light;
-    // The point whose optical depth is -ln(1 - xi (1 - T)).
-    float depth = -log(1.0 - fg_sample_square(2u).x * opaque);
-    float s = depth / max(fg_scene.fog_density, 1e-30);
-    if (fg_scene.fog_height.x > 0.0) {
-        float a = fg_fog_density_at(ro), x = fg_scene.fog_height.x * rd.y;
-        s = abs(x * depth / a) < 1e-4 ? depth / a : -log(max(1.0 - x * depth / a, 1e-30)) / x;
+    vec3 light = fg_scene.light_color.rgb * share * fg_fog_phase(fg_scene.light_dir.xyz, rd) * opaque;
+    vec3 towards;
+    float distance;
+    if (fg_frame.area_light.z == 0.0) {
+#ifdef FG_HAS_LIGHTS
+        for (uint i = 0u; i < fg_scene.auxiliary_lights; i++) light += fg_fog_auxiliary(i, ro, rd, far, opaque);
+#endif
+        return light;
     }
+    float s = min(fg_fog_at_share(ro, rd, fg_sample_square(2u).x * opaque), far);
+    vec3 x = ro + rd * s;
     vec3 q;
     float total;
-    return fg_march_on(ro + rd * min(s, far), fg_scene.light_dir.xyz, min(s, far), q, total) ? vec3(0.0) : light;
+    vec3 scattered = fg_march_on(x, fg_scene.light_dir.xyz, s, q, total) ? vec3(0.0) : light;
+#ifdef FG_HAS_LIGHTS
+    for (uint i = 0u; i < fg_scene.auxiliary_lights; i++) {
+        vec3 radiance = fg_auxiliary_towards(i, x, towards, distance);
+        // Only what lies between the point and the light shadows it.
+        if (!fg_march_on(x, towards, s, q, total) || total - s > distance)
+            scattered += radiance * (share * fg_fog_phase(towards, rd) * opaque);
+    }
+#endif
+    return scattered;
 }
 #endif
 
