@@ -6,10 +6,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <fmt/format.h>
 
 #include <Imath/half.h>
+#include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfRgbaFile.h>
 
 #include "frame/aov_images.h"
 #include "offline/jittered_samples.h"
@@ -26,6 +29,14 @@ double beauty_red(const RenderedFrame& f, std::size_t pixel) {
     Imath::half h;
     std::memcpy(&h, f.aovs_left[test::aov_index("beauty")].data() + 4 * pixel * sizeof h, sizeof h);
     return static_cast<double>(h);
+}
+
+// The integral of f over [0, length] by Simpson's rule over n (even) intervals.
+template <class F>
+double simpson(F f, double length, int n) {
+    double sum = 0.0;
+    for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * f(length * i / n);
+    return sum * length / (3.0 * n);
 }
 
 class Fog : public RuntimeTest {};
@@ -54,13 +65,8 @@ TEST_F(Fog, transmittance_along_each_ray_is_beer_lambert_for_homogeneous_and_hei
             for (std::uint32_t x = 0; x < kSize; x += 3) {
                 const glm::dvec3 d = view.ray((x + 0.5) / kSize, (y + 0.5) / kSize);
                 // The optical depth by Simpson's rule over 2000 intervals.
-                double depth = 0.0;
-                const int n = 2000;
-                for (int i = 0; i <= n; ++i) {
-                    const double s = far * i / n, w = i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0;
-                    const double rho = height ? density * std::exp(-falloff * (eye.y + d.y * s - base)) : density;
-                    depth += w * rho * far / (3.0 * n);
-                }
+                const double depth = simpson(
+                    [&](double s) { return height ? density * std::exp(-falloff * (eye.y + d.y * s - base)) : density; }, far, 2000);
                 const double expected = std::exp(-depth);
                 if (expected < 0.05) continue;   // too dark for the beauty's half floats to say 0.5 %
                 lowest = std::min(lowest, expected);
@@ -177,15 +183,11 @@ TEST_F(Fog, an_auxiliary_point_light_scatters_by_the_integral_along_each_ray) {
     for (std::uint32_t y = 0; y < kSize; y += 3)
         for (std::uint32_t x = 0; x < kSize; x += 3) {
             const glm::dvec3 d = view.ray((x + 0.5) / kSize, (y + 0.5) / kSize);
-            double exact = 0.0;
-            const int n = 4000;
-            for (int i = 0; i <= n; ++i) {
-                const double s = far * i / n, w = i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0;
+            const double exact = share * simpson([&](double s) {
                 const glm::dvec3 to_light = light - d * s;
                 const double d2 = glm::dot(to_light, to_light);
-                exact += w * density * std::exp(-density * s) * phase(glm::dot(to_light, d) / std::sqrt(d2)) * intensity / d2;
-            }
-            exact *= share * far / (3.0 * n);
+                return density * std::exp(-density * s) * phase(glm::dot(to_light, d) / std::sqrt(d2)) * intensity / d2;
+            }, far, 4000);
             const std::size_t i = std::size_t(y) * kSize + x;
             frame_worst = std::max(frame_worst, std::abs(beauty_red(frame, i) / exact - 1.0));
             frame_sum += beauty_red(frame, i), sampled_sum += beauty_red(sampled, i), exact_sum += exact;
@@ -199,4 +201,62 @@ TEST_F(Fog, an_auxiliary_point_light_scatters_by_the_integral_along_each_ray) {
     std::printf("%s\n", figures.c_str());
     EXPECT_LT(frame_worst, 0.02) << figures;
     EXPECT_NEAR(sampled_sum / exact_sum, 1.0, 0.01) << figures;
+}
+
+TEST_F(Fog, the_environment_scatters_by_the_phase_averaged_sky) {
+    // Fog of density 0.2 lit by the environment alone, the view up into the sky (nothing in it: a
+    // small ball far below): a ray to the far limit 10 sees the sky through T = e^-2 and gathers
+    // share * (1 - T) * the sky's radiance averaged by the phase. A uniform sky of 1 gives 1
+    // whatever the anisotropy (g 0.6 here); a sky lit only above the horizon gives 1/2 to isotropic
+    // fog (g 0) in every direction. A frame takes the harmonics, 64 samples one direction each.
+    const double density = 0.2, share = 1.5, far = 10.0;
+    const double transmittance = std::exp(-density * far);
+    auto render = [&](const std::string& sky, double g, double expected) {
+        Pack pack = test::compile_pack(fmt::format(R"({{
+          "format": "fractograph-graph", "version": 1, "name": "sky in fog",
+          "nodes": [{{"id": "at", "type": "xform.translate", "inputs": {{"offset": [0, -30, 0]}}}},
+                    {{"id": "ball", "type": "prim.sphere", "inputs": {{"p": "at.p", "radius": 0.1}}}}],
+          "outputs": {{"distance": "ball.distance"}},
+          "scene": {{"camera": {{"position": [0, 0, 0], "target": [0, 0.6, -1], "fov_deg": 40}},
+                    "light": {{"color": [0, 0, 0], "ambient": [0, 0, 0]}}, "albedo": [0, 0, 0],
+                    "environment": {}, "bounds": {{"radius": 50}}, "max_distance": {},
+                    "fog": {{"color": [0, 0, 0], "density": {}, "scatter": {}, "anisotropy": {}}}}}
+        }})", sky, far, density, share, g));
+        HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
+        const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
+        const RenderedFrame sampled = render_samples(r, r.scene_camera(), 0.0, 0, 64);
+        // What the fog scattered: the beauty less the sky seen through it (1 in every pixel here).
+        auto scattered = [&](const RenderedFrame& f, std::size_t i) { return (beauty_red(f, i) - transmittance) / (share * (1.0 - transmittance)); };
+        double frame_worst = 0.0, sampled_sum = 0.0;
+        int n = 0;
+        for (std::size_t i = 0; i < std::size_t(kSize) * kSize; i += 7, ++n) {
+            frame_worst = std::max(frame_worst, std::abs(scattered(frame, i) / expected - 1.0));
+            sampled_sum += scattered(sampled, i);
+        }
+        return std::make_pair(frame_worst, sampled_sum / (n * expected));
+    };
+    const std::string half_sky = [] {
+        const auto path = std::filesystem::temp_directory_path() / fmt::format("fg_fog_half_sky_{}.exr", ::getpid());
+        const int width = 64, height = 32;
+        Imf::Array2D<Imf::Rgba> pixels(height, width);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) pixels[y][x] = y < height / 2 ? Imf::Rgba(1, 1, 1, 1) : Imf::Rgba(0, 0, 0, 1);
+        Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_RGBA);
+        file.setFrameBuffer(&pixels[0][0], 1, width);
+        file.writePixels(height);
+        return path.string();
+    }();
+    const auto [uniform_frame, uniform_sampled] = render(R"({"color": [1, 1, 1]})", 0.6, 1.0);
+    const auto [half_frame, half_sampled] = render(fmt::format(R"({{"image": "{}"}})", half_sky), 0.0, 0.5);
+    std::filesystem::remove(half_sky);
+    const std::string figures = fmt::format(
+        "a uniform sky, g 0.6: a frame at most {:.3f} % from share (1 - T), 64 samples {:+.2f} % summed; the upper half "
+        "of the sky, g 0: a frame at most {:.3f} % from share (1 - T) / 2, 64 samples {:+.2f} %",
+        100.0 * uniform_frame, 100.0 * (uniform_sampled - 1.0), 100.0 * half_frame, 100.0 * (half_sampled - 1.0));
+    RecordProperty("environment", figures);
+    std::printf("%s\n", figures.c_str());
+    EXPECT_LT(uniform_frame, 0.005) << figures;
+    EXPECT_NEAR(uniform_sampled, 1.0, 0.02) << figures;
+    EXPECT_LT(half_frame, 0.01) << figures;
+    EXPECT_NEAR(half_sampled, 1.0, 0.02) << figures;
 }

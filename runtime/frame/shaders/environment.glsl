@@ -54,20 +54,36 @@ vec3 fg_environment_radiance(vec3 d)
     return fg_scene.environment.rgb * mix(top, bottom, f.y);
 }
 
-// What a white diffuse surface facing n reflects of the environment, unshadowed: its irradiance
-// over pi, from the nine harmonics.
-vec3 fg_environment_irradiance(vec3 n)
+// The environment's nine harmonics at world direction d, band l weighted by weight[l]. The runtime
+// stores the radiance's harmonics convolved with the clamped cosine (1, 2/3 and 1/4 per band).
+vec3 fg_environment_harmonics(vec3 d, vec3 weight)
 {
-    vec3 l = fg_env_local(n);
+    vec3 l = fg_env_local(d);
     float y[9] = float[9](0.282095, 0.488603 * l.y, 0.488603 * l.z, 0.488603 * l.x, 1.092548 * l.x * l.y,
                           1.092548 * l.y * l.z, 0.315392 * (3.0 * l.z * l.z - 1.0), 1.092548 * l.x * l.z,
                           0.546274 * (l.x * l.x - l.y * l.y));
     vec3 e = vec3(0.0);
     for (uint k = 0u; k < 9u; k++) {
         uint at = FG_ENV_HARMONICS + 4u * k;
-        e += y[k] * vec3(fg_env_float(at), fg_env_float(at + 1u), fg_env_float(at + 2u));
+        e += (k == 0u ? weight.x : k < 4u ? weight.y : weight.z) * y[k] *
+             vec3(fg_env_float(at), fg_env_float(at + 1u), fg_env_float(at + 2u));
     }
     return fg_scene.environment.rgb * max(e, vec3(0.0));
+}
+
+// What a white diffuse surface facing n reflects of the environment, unshadowed: its irradiance
+// over pi, from the nine harmonics.
+vec3 fg_environment_irradiance(vec3 n)
+{
+    return fg_environment_harmonics(n, vec3(1.0));
+}
+
+// The environment's light a medium of Henyey-Greenstein anisotropy g scatters towards the eye
+// looking along d, unshadowed: the phase's Legendre weights are g^l, so each band of the radiance
+// (the stored bands undone from the cosine's) is weighted by g^l (Funk-Hecke).
+vec3 fg_environment_scattered(vec3 d, float g)
+{
+    return fg_environment_harmonics(d, vec3(1.0, 1.5 * g, 4.0 * g * g));
 }
 
 // The interval of a cumulative table (count intervals from `first`) that x falls in.

@@ -177,9 +177,10 @@ vec3 fg_fog_auxiliary(uint i, vec3 ro, vec3 rd, float far, float opaque)
 // The light the fog scatters towards the eye along the ray from ro along rd over t (a miss: the far
 // limit), its share fog_height.z of each light. With a constant share, the scattering density times
 // the transmittance integrates to 1 - T over the ray, whatever the density's profile: a frame takes
-// that for the main light and the auxiliary lights, unshadowed (fg_fog_auxiliary). While samples accumulate each
+// that for the main light and the auxiliary lights, unshadowed (fg_fog_auxiliary), and for the
+// environment its harmonics weighted by the phase's (fg_environment_scattered). While samples accumulate each
 // sample takes one point of the ray, drawn in proportion to that integrand (the optical depth
-// inverted), and marches from it towards each light: the mean converges to the shadowed integral,
+// inverted), and marches from it towards each light and one direction of the sky: the mean converges to the shadowed integral,
 // light shafts through the fractal's holes included.
 vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
 {
@@ -193,6 +194,9 @@ vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
     if (fg_frame.area_light.z == 0.0) {
 #ifdef FG_HAS_LIGHTS
         for (uint i = 0u; i < fg_scene.auxiliary_lights; i++) light += fg_fog_auxiliary(i, ro, rd, far, opaque);
+#endif
+#ifdef FG_HAS_ENVIRONMENT
+        light += fg_environment_scattered(rd, fg_scene.fog_height.w) * (share * opaque);
 #endif
         return light;
     }
@@ -208,6 +212,13 @@ vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
         if (!fg_march_on(x, towards, s, q, total) || total - s > distance)
             scattered += radiance * (share * fg_fog_phase(towards, rd) * opaque);
     }
+#endif
+#ifdef FG_HAS_ENVIRONMENT
+    // One direction of the sky, drawn by its brightness, and a march towards it.
+    vec3 sky = fg_environment_sample(fg_sample_square(3u));
+    float pdf = fg_environment_pdf(sky);
+    if (pdf > 0.0 && !fg_march_on(x, sky, s, q, total))
+        scattered += fg_environment_radiance(sky) * (share * fg_fog_phase(sky, rd) * opaque / pdf);
 #endif
     return scattered;
 }
@@ -366,7 +377,7 @@ vec3 fg_refracted_light(vec3 p, vec3 rd, vec3 n, float t, FgSurface surface)
         vec3 out_dir = refract(dir, -m, ior);
         float reflectance = float(fg_fresnel_dielectric(dot(dir, m), 1.0 / ior));
         bool back = out_dir == vec3(0.0);   // total internal reflection
-        if (!back && sampling) back = fg_sample_square(3u + uint(segment)).x < reflectance;
+        if (!back && sampling) back = fg_sample_square(4u + uint(segment)).x < reflectance;
         if (back) {
             dir = reflect(dir, m);
             from = q;
