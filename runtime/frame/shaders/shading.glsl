@@ -110,11 +110,18 @@ bool fg_march_on(vec3 origin, vec3 dir, float t, out vec3 q, out float total)
     return false;
 }
 
+// How far from a surface t from the eye a ray leaving it starts, so that it does not meet that
+// surface again at once.
+float fg_surface_offset(float t)
+{
+    float footprint = FG_EPSILON * fg_detail_tan();
+    return 2.0 * footprint * t + 1e-6 * fg_frame.world_scale;
+}
+
 // The same from the hit p with normal n: it starts just above the surface.
 bool fg_march_from_hit(vec3 p, vec3 n, vec3 dir, float t, out vec3 q, out float total)
 {
-    float footprint = FG_EPSILON * fg_detail_tan();
-    return fg_march_on(p + n * (2.0 * footprint * t + 1e-6 * fg_frame.world_scale), dir, t, q, total);
+    return fg_march_on(p + n * fg_surface_offset(t), dir, t, q, total);
 }
 #endif
 
@@ -160,15 +167,15 @@ vec3 fg_fog_auxiliary(uint i, vec3 ro, vec3 rd, float far, float opaque)
     float nearest = dot(offset, rd);
     float h = max(length(offset - rd * nearest), 1e-6 * fg_frame.world_scale);
     float first = atan(-nearest, h), last = atan(far - nearest, h);
-    float step = (last - first) / float(FG_FOG_LIGHT_POINTS);
+    float spacing = (last - first) / float(FG_FOG_LIGHT_POINTS);
     vec3 light = vec3(0.0);
     for (int k = 0; k < FG_FOG_LIGHT_POINTS; k++) {
-        float s = nearest + h * tan(first + (float(k) + 0.5) * step);
+        float s = nearest + h * tan(first + (float(k) + 0.5) * spacing);
         vec3 x = ro + rd * s;
         vec3 brought = fg_auxiliary_towards(i, x, towards, distance);
         // I / d^2 ds = I / h dtheta: the radiance times d^2 / h.
         float scattering = fg_fog_density_at(x) * exp(-fg_fog_depth(ro, rd, s));
-        light += brought * (distance * distance / h * step * scattering * share * fg_fog_phase(towards, rd));
+        light += brought * (distance * distance / h * spacing * scattering * share * fg_fog_phase(towards, rd));
     }
     return light;
 }
@@ -178,10 +185,10 @@ vec3 fg_fog_auxiliary(uint i, vec3 ro, vec3 rd, float far, float opaque)
 // limit), its share fog_height.z of each light. With a constant share, the scattering density times
 // the transmittance integrates to 1 - T over the ray, whatever the density's profile: a frame takes
 // that for the main light and the auxiliary lights, unshadowed (fg_fog_auxiliary), and for the
-// environment its harmonics weighted by the phase's (fg_environment_scattered). While samples accumulate each
-// sample takes one point of the ray, drawn in proportion to that integrand (the optical depth
-// inverted), and marches from it towards each light and one direction of the sky: the mean converges to the shadowed integral,
-// light shafts through the fractal's holes included.
+// environment its harmonics weighted by the phase's (fg_environment_scattered). While samples
+// accumulate, each sample takes one point of the ray, drawn in proportion to that integrand (the
+// optical depth inverted), and marches from it towards each light and one direction of the sky: the
+// mean converges to the shadowed integral, light shafts through the fractal's holes included.
 vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
 {
     float share = fg_scene.fog_height.z;
@@ -326,12 +333,12 @@ vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
 const int FG_GLASS_SEGMENTS = 6;
 
 // A ray inside a body from `origin` (t travelled from the eye) along dir: true, with the point just
-// inside where the body ends and the length inside, where the distance (negative inside) comes back
-// within the pixel's cone grown over the whole path, the rule the eye's rays meet surfaces by.
-bool fg_march_inside(vec3 origin, vec3 dir, float t, out vec3 q, out float along)
+// inside where the body ends, where the distance (negative inside) comes back within the pixel's
+// cone grown over the whole path, the rule the eye's rays meet surfaces by.
+bool fg_march_inside(vec3 origin, vec3 dir, float t, out vec3 q)
 {
     float footprint = FG_EPSILON * fg_detail_tan();
-    along = 0.0;
+    float along = 0.0;
     for (int i = 0; i < FG_MAX_STEPS; i++) {
         q = origin + dir * along;
         float d = -float(fg_scene_distance(q)) * FG_STEP_SCALE;
@@ -339,12 +346,6 @@ bool fg_march_inside(vec3 origin, vec3 dir, float t, out vec3 q, out float along
         along += d;
     }
     return false;
-}
-
-// How far below a surface t from the eye a ray starts so that it does not meet that surface again.
-float fg_surface_offset(float t)
-{
-    return 2.0 * FG_EPSILON * fg_detail_tan() * t + 1e-6 * fg_frame.world_scale;
 }
 
 // The light that comes through glass from the hit p (t along rd, normal n, the graph's outputs
@@ -365,8 +366,7 @@ vec3 fg_refracted_light(vec3 p, vec3 rd, vec3 n, float t, FgSurface surface)
     vec3 at = p - n * fg_surface_offset(t);     // where its march starts, below that surface
     for (int segment = 0; segment < FG_GLASS_SEGMENTS; segment++) {
         vec3 q;
-        float along;
-        if (!fg_march_inside(at, dir, t, q, along)) return light;
+        if (!fg_march_inside(at, dir, t, q)) return light;
         // The length inside, surface to surface: `from` lies short of its surface outside and q
         // short of its own inside, by the same rule, so the two errors cancel (the march's length
         // would miss the start's offset: 1.1 % more light through the refraction test's red ball).
