@@ -41,7 +41,8 @@ TEST(DoubleLowering, names_the_functions_that_have_no_double_form) {
 TEST(DoublePrecision, the_gallery_compiles_in_double_and_the_pack_says_so) {
     for (const char* name : {"graphs/gallery/mandelbulb.json", "graphs/gallery/mandelbox.json",
                              "graphs/gallery/menger_twisted.json", "graphs/examples/node_showcase.json",
-                             "graphs/examples/halls_shafts.json", "graphs/examples/hdri_mandelbulb.json"}) {
+                             "graphs/examples/halls_shafts.json", "graphs/examples/hdri_mandelbulb.json",
+                             "graphs/examples/glass_ball.json"}) {
         SCOPED_TRACE(name);
         fg::Diagnostics diag;
         fg::CompileOptions options;
