@@ -66,8 +66,9 @@ struct SceneSettings {
         // (and rises below it); 0: the same density everywhere.
         double height_falloff = 0.0;
         double height = 0.0;
-        // Light shafts: the fog scatters this share of each light that reaches it (main and auxiliary) (0: none),
-        // forward for anisotropy > 0 (Henyey-Greenstein). Shadowed while samples accumulate.
+        // Light shafts: the fog scatters this share of each light that reaches it, the main one, the
+        // auxiliary ones and the environment (0: none), forward for anisotropy > 0
+        // (Henyey-Greenstein). Shadowed while samples accumulate.
         double scatter = 0.0;
         double anisotropy = 0.0;
         bool operator==(const Fog&) const = default;

@@ -16,8 +16,8 @@ struct AovImage {
 };
 
 std::span<const AovImage> aov_images();
-// Whether a scene of these effects has the image: the light, reflection and refraction terms only where it
-// uses them (their EXR channels are left out too); the rest always.
+// Whether a scene of these effects has the image: the light, reflection and refraction terms only
+// where it uses them (their EXR channels are left out too); the rest always.
 bool aov_image_needed(const AovImage& image, const EffectSet& effects);
 std::string aov_image_name(const AovImage& image, const std::string& eye);
 

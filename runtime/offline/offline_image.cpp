@@ -23,8 +23,8 @@ std::size_t beauty_index() {
 }
 
 // Which channels of AOV image `image` hold light or a share of it, averaged over a pixel's samples as
-// the picture is: the beauty, the light terms (specular, shadow), the mirror bounce, the light through glass, and the AO
-// in the normal image's alpha. Bit 0 is red.
+// the picture is: the beauty, the light terms (specular, shadow), the mirror bounce, the light
+// through glass, and the AO in the normal image's alpha. Bit 0 is red.
 unsigned averaged_channels(std::size_t image) {
     const std::string_view name = aov_images()[image].name;
     if (name == "beauty" || name == "light" || name == "reflection" || name == "refraction") return 0xF;

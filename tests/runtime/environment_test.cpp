@@ -6,18 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <numbers>
 #include <stdexcept>
 #include <fmt/format.h>
 
-#include <Imath/half.h>
-#include <OpenEXR/ImfArray.h>
-#include <OpenEXR/ImfRgbaFile.h>
-
 #include "frame/aov_images.h"
 #include "offline/jittered_samples.h"
+#include "aov_pixels.h"
+#include "lat_long_exr.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -28,33 +25,9 @@ namespace {
 constexpr std::uint32_t kSize = 96;
 constexpr double kPi = std::numbers::pi;
 
-// Channel c of pixel i of the left eye's HDR beauty, and its hit distance (not finite: a miss).
-double beauty(const RenderedFrame& f, std::size_t i, int c) {
-    Imath::half h;
-    std::memcpy(&h, f.aovs_left[test::aov_index("beauty")].data() + (4 * i + c) * sizeof h, sizeof h);
-    return static_cast<double>(h);
-}
-bool hit(const RenderedFrame& f, std::size_t i) {
-    float w;
-    std::memcpy(&w, f.aovs_left[test::aov_index("position")].data() + (4 * i + 3) * sizeof w, sizeof w);
-    return std::isfinite(w);
-}
-
-// A lat-long OpenEXR of width x height whose texel (column, row) is colour(u, v) at its centre.
-template <class Colour>
-std::string write_sky(const std::string& name, int width, int height, Colour colour) {
-    const auto path = std::filesystem::temp_directory_path() / fmt::format("fg_environment_{}_{}.exr", name, ::getpid());
-    Imf::Array2D<Imf::Rgba> pixels(height, width);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const glm::dvec3 c = colour((x + 0.5) / width, (y + 0.5) / height);
-            pixels[y][x] = Imf::Rgba(static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z), 1.0f);
-        }
-    Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_RGBA);
-    file.setFrameBuffer(&pixels[0][0], 1, static_cast<std::size_t>(width));
-    file.writePixels(height);
-    return path.string();
-}
+// Channel c of pixel i of the left eye's HDR beauty, and whether the pixel's ray met the surface.
+double beauty(const RenderedFrame& f, std::size_t i, int c) { return test::aov_half(f, "beauty", i, c); }
+bool hit(const RenderedFrame& f, std::size_t i) { return std::isfinite(test::aov_position(f, i).w); }
 
 // One body (`distance` and its nodes) lit by the environment alone, albedo 0.8.
 Pack lit_by_sky(const std::string& nodes, const std::string& distance, const std::string& camera, const std::string& environment) {
@@ -107,7 +80,8 @@ TEST_F(Environment, a_sky_bright_near_the_zenith_lights_a_plane_as_the_integral_
     // E = pi L sin^2(60), and reflects albedo E / pi. The harmonics' truncation has its own closed
     // form: the cap's order-0, 1 and 2 coefficients, each times its share of the cosine lobe.
     const double radiance = 2.0, cap = kPi / 3.0;
-    const std::string sky = write_sky("cap", 240, 120, [&](double, double v) { return glm::dvec3(v * kPi < cap ? radiance : 0.0); });
+    const std::string sky =
+        test::write_lat_long_exr("cap", 240, 120, [&](double, double v) { return glm::dvec3(v * kPi < cap ? radiance : 0.0); });
     Pack pack = lit_by_sky(R"({"id": "ground", "type": "prim.plane"})", "ground.distance",
                            R"({"position": [0, 2, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 60})",
                            fmt::format(R"({{"image": "{}"}})", sky));
@@ -146,7 +120,7 @@ TEST_F(Environment, the_background_shows_the_image_where_a_panorama_puts_it_turn
     // Red is the image's u, green its v: each background pixel must read the (u, v) its direction
     // maps to, u = 0.5 looking down -z and growing towards +x, v = 0 straight up; turned 90 degrees
     // counter-clockwise from above, what was towards +x is seen down -z.
-    const std::string sky = write_sky("uv", 512, 256, [](double u, double v) { return glm::dvec3(u, v, 0.0); });
+    const std::string sky = test::write_lat_long_exr("uv", 512, 256, [](double u, double v) { return glm::dvec3(u, v, 0.0); });
     for (double turn : {0.0, 90.0}) {
         // Nothing in view: one small ball behind the camera.
         Pack pack = lit_by_sky(R"({"id": "at", "type": "xform.translate", "inputs": {"offset": [0, 0, 20]}},
@@ -179,7 +153,7 @@ TEST_F(Environment, a_sky_split_into_halves_lights_each_side_of_a_sphere_by_its_
     // Green over the half of the sky towards the camera (+z), red over the other: the point of the
     // ball facing the camera sees all green and no red, in a frame (the harmonics hold a half-space
     // exactly at its pole) and sampled.
-    const std::string sky = write_sky("halves", 256, 128, [](double u, double) {
+    const std::string sky = test::write_lat_long_exr("halves", 256, 128, [](double u, double) {
         return u >= 0.25 && u < 0.75 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     });
     Pack pack = lit_by_sky(R"({"id": "ball", "type": "prim.sphere", "inputs": {"radius": 1.0}})", "ball.distance",

@@ -5,17 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <fmt/format.h>
 
-#include <Imath/half.h>
-#include <OpenEXR/ImfArray.h>
-#include <OpenEXR/ImfRgbaFile.h>
-
 #include "frame/aov_images.h"
 #include "offline/jittered_samples.h"
+#include "aov_pixels.h"
+#include "lat_long_exr.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -25,11 +22,7 @@ namespace {
 
 constexpr std::uint32_t kSize = 64;
 
-double beauty_red(const RenderedFrame& f, std::size_t pixel) {
-    Imath::half h;
-    std::memcpy(&h, f.aovs_left[test::aov_index("beauty")].data() + 4 * pixel * sizeof h, sizeof h);
-    return static_cast<double>(h);
-}
+double beauty_red(const RenderedFrame& f, std::size_t pixel) { return test::aov_half(f, "beauty", pixel, 0); }
 
 // The integral of f over [0, length] by Simpson's rule over n (even) intervals.
 template <class F>
@@ -235,17 +228,8 @@ TEST_F(Fog, the_environment_scatters_by_the_phase_averaged_sky) {
         }
         return std::make_pair(frame_worst, sampled_sum / (n * expected));
     };
-    const std::string half_sky = [] {
-        const auto path = std::filesystem::temp_directory_path() / fmt::format("fg_fog_half_sky_{}.exr", ::getpid());
-        const int width = 64, height = 32;
-        Imf::Array2D<Imf::Rgba> pixels(height, width);
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) pixels[y][x] = y < height / 2 ? Imf::Rgba(1, 1, 1, 1) : Imf::Rgba(0, 0, 0, 1);
-        Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_RGBA);
-        file.setFrameBuffer(&pixels[0][0], 1, width);
-        file.writePixels(height);
-        return path.string();
-    }();
+    const std::string half_sky =
+        test::write_lat_long_exr("half", 64, 32, [](double, double v) { return glm::dvec3(v < 0.5 ? 1.0 : 0.0); });
     const auto [uniform_frame, uniform_sampled] = render(R"({"color": [1, 1, 1]})", 0.6, 1.0);
     const auto [half_frame, half_sampled] = render(fmt::format(R"({{"image": "{}"}})", half_sky), 0.0, 0.5);
     std::filesystem::remove(half_sky);

@@ -5,13 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <fmt/format.h>
-
-#include <Imath/half.h>
 
 #include "frame/aov_images.h"
 #include "offline/jittered_samples.h"
+#include "aov_pixels.h"
 #include "runtime_test_support.h"
 
 using namespace fg;
@@ -23,11 +21,7 @@ constexpr std::uint32_t kSize = 96;
 constexpr double kIor = 1.5;
 
 // Channel c of pixel i of the left eye's AOV image `name`.
-double channel(const RenderedFrame& f, const char* name, std::size_t i, int c) {
-    Imath::half h;
-    std::memcpy(&h, f.aovs_left[test::aov_index(name)].data() + (4 * i + c) * sizeof h, sizeof h);
-    return static_cast<double>(h);
-}
+double channel(const RenderedFrame& f, const char* name, std::size_t i, int c) { return test::aov_half(f, name, i, c); }
 
 // Fresnel's unpolarised reflectance into a medium eta times as dense, at incidence cosine c.
 double fresnel(double c, double eta) {
@@ -137,13 +131,10 @@ TEST_F(Refraction, a_glass_ball_passes_on_fresnels_transmission_and_absorbs_alon
     glm::dvec3 sampled_sum(0.0), series_sum(0.0);
     std::size_t ball = 0;
     for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i) {
-        float w;
-        std::memcpy(&w, frame.aovs_left[test::aov_index("position")].data() + (4 * i + 3) * sizeof w, sizeof w);
-        if (!std::isfinite(w)) continue;   // a miss
-        float p[3];
-        std::memcpy(p, frame.aovs_left[test::aov_index("position")].data() + 4 * i * sizeof w, sizeof p);
+        const glm::dvec4 p = test::aov_position(frame, i);
+        if (!std::isfinite(p.w)) continue;   // a miss
         const glm::dvec3 n(channel(frame, "normal", i, 0), channel(frame, "normal", i, 1), channel(frame, "normal", i, 2));
-        const double c = glm::dot(glm::normalize(n), glm::normalize(camera - glm::dvec3(p[0], p[1], p[2])));
+        const double c = glm::dot(glm::normalize(n), glm::normalize(camera - glm::dvec3(p)));
         // Towards the rim the ray meets the far side ever nearer the critical angle (41.8 degrees
         // inside; 39.5 at c = 0.3), where the exit's transmission turns on the normal's last digits.
         if (c < 0.5) continue;

@@ -6,8 +6,9 @@
 //! include-after-scene: shading.glsl
 // The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
 // beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse
-// factor, the orbit trap, the specular reflectance, the shadow, the mirror bounce's colour and the light through glass. Runs only when an offline render asks for them; it shades each hit
-// once more with the shade pass's own functions, so the beauty is the picture's colour.
+// factor, the orbit trap, the specular reflectance, the shadow, the mirror bounce's colour and the
+// light through glass. Runs only when an offline render asks for them; it shades each hit once more
+// with the shade pass's own functions, so the beauty is the picture's colour.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
