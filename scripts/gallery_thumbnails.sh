@@ -7,6 +7,7 @@
 #     --full   also render the full-size offline pictures listed in OFFLINE below (minutes each),
 #              timing each render; without it the page reuses the pictures and times already in
 #              docs/images/gallery/ (NAME_full.png and NAME_full.time)
+#     NAME     with --full: only these scenes' full-size pictures (repeatable)
 # Tools: $FG_BUILD_DIR/compiler/fgc and $FG_BUILD_DIR/runtime/fgplay (FG_BUILD_DIR defaults to build/),
 # or FGC=... FGPLAY=... to name them directly.
 set -euo pipefail
@@ -16,11 +17,13 @@ BUILD=${FG_BUILD_DIR:-$ROOT/build}
 SIZE=256
 FULL=0
 PAGE_ONLY=0
+ONLY=" "
 for arg in "$@"; do
   case "$arg" in
     --full) FULL=1 ;;
     --page) PAGE_ONLY=1 ;;
-    *) SIZE=$arg ;;
+    [0-9]*) SIZE=$arg ;;
+    *) ONLY+="$arg " ;;
   esac
 done
 FGC=${FGC:-$BUILD/compiler/fgc}
@@ -36,6 +39,9 @@ export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$BUILD/mesa-cache}
 OFFLINE='
 mandelbox_halls --size 960x540 --samples 9
 mandelbulb_dof --size 960x540 --samples 64 --aperture 0.1 --focus 1.2
+hdri_mandelbulb --size 960x540 --samples 16
+halls_shafts --size 960x540 --samples 16
+glass_ball --size 960x540 --samples 16
 '
 
 mkdir -p "$IMAGES"
@@ -55,6 +61,7 @@ done
 if [ "$FULL" = 1 ]; then
   while read -r name options; do
     [ -n "$name" ] || continue
+    [ "$ONLY" = " " ] || [[ $ONLY == *" $name "* ]] || continue
     echo "==> $name, full size: fgplay render $name.fgpack $options"
     # Wall time of the whole command (both eyes: fgplay render always renders a stereo pair) and
     # the CPU time it used; the left eye is the picture.
@@ -81,7 +88,8 @@ out = ["# The gallery", "",
        "`scripts/gallery_thumbnails.sh` (do not edit this page by hand: that script writes it).",
        "Every scene is also rendered by the test suite (`tests/runtime/gallery_test.cpp`) and checked against the CPU twin.",
        "Scenes lit for stills also show a full-size offline render, with the command that made it and what it took",
-       "(`scripts/gallery_thumbnails.sh --full` renders them again).", ""]
+       "(`scripts/gallery_thumbnails.sh --full` renders them again; an H200 renders each in well under a second",
+       "of GPU time: [shading.md](shading.md#what-the-lit-examples-cost-on-a-gpu)).", ""]
 graphs = [(path, json.loads(path.read_text())) for path in sorted((root / "graphs" / "gallery").glob("*.json"))]
 # A grid of thumbnails first (users look rather than read), then what each scene is made of.
 columns = 4
@@ -96,9 +104,10 @@ out.append("")
 for path, g in graphs:
     types = sorted({n["type"] for n in g["nodes"] if n["type"].startswith(("fractal.", "prim.", "op."))})
     lights = sorted({n["type"] for n in g["nodes"] if n["type"] in
-                     ("light.soft_shadow", "light.marched_ao", "light.specular", "light.reflection")})
+                     ("light.soft_shadow", "light.marched_ao", "light.specular", "light.reflection",
+                      "light.refraction")})
     scene = g.get("scene", {})
-    extras = [k for k in ("fog", "glow", "vignette") if k in scene]
+    extras = [k for k in ("environment", "fog", "glow", "vignette") if k in scene]
     out += [f'<a id="{path.stem}"></a>', "", f"## {g['name']}", "",
             g.get("description", ""), "",
             f"`graphs/gallery/{path.name}` · nodes: {', '.join('`%s`' % t for t in types)}"

@@ -133,8 +133,11 @@ int render(const RenderOptions& o) {
                                               100.0 * p.tiles_sampling, p.noisy_pixels, p.mean_samples));
                 bar->advance(false);
             };
+            const auto began = std::chrono::steady_clock::now();
             RenderedFrame r = render_samples(renderer, [&](double) { return SampleMoment{head, time}; },
                                              static_cast<std::uint32_t>(f), budget);
+            // Beside the GPU's own time: on a GPU, readbacks and summing can be most of a sampled still.
+            const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
             if (bar) bar->finish();
             std::string suffix = o.frames > 1 ? fmt::format("_{:04}", f) : "";
             auto path = [&](const std::string& name) { return (std::filesystem::path(o.out) / (name + suffix + ".png")).string(); };
@@ -161,8 +164,9 @@ int render(const RenderOptions& o) {
             if (o.noise > 0.0) samples = fmt::format(", {:.1f} samples a pixel (at most {}, noise target {:g})", mean_samples, o.samples, o.noise);
             if (renderer.graph().output_width != renderer.graph().width)
                 samples += fmt::format(", marched at {}x{}", renderer.graph().width, renderer.graph().height);
-            fmt::print("frame {}: {} stereo {}x{} per eye{}; GPU{}\n", f, stereo_mode_name(o.stereo), o.width, o.height, samples,
-                       times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1));
+            fmt::print("frame {}: {} stereo {}x{} per eye{}; GPU{}{}\n", f, stereo_mode_name(o.stereo), o.width, o.height, samples,
+                       times.empty() ? " timestamps unsupported" : times.substr(0, times.size() - 1),
+                       o.samples > 1 ? fmt::format("; {:.0f} ms on the clock", wall_ms) : "");
             if (o.time_passes) print_pass_times(r.stats.gpu_ms);
             if (frame.count_evaluations) {
                 fmt::print("  SDF evaluations per output pixel: {:.2f} ({})\n", r.stats.evaluations_per_pixel,

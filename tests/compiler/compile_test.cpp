@@ -38,7 +38,7 @@ TEST(Compile, every_gallery_graph_compiles_into_passes_that_pass_spirv_val) {
     ASSERT_FALSE(files.empty());
     for (const auto& f : files) {
         fg::Diagnostics diag;
-        auto r = compile_text(fg::test::read_source_file(std::filesystem::relative(f, FG_SOURCE_DIR).string()), diag);
+        auto r = compile_text(fg::test::read_source_file(std::filesystem::relative(f, FG_SOURCE_DIR).string()), diag, "graphs/gallery");
         ASSERT_TRUE(r) << f << "\n" << diag.format();
         ASSERT_FALSE(r->passes.empty());
         for (const auto& p : r->passes) {

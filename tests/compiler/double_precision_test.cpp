@@ -41,12 +41,12 @@ TEST(DoubleLowering, names_the_functions_that_have_no_double_form) {
 TEST(DoublePrecision, the_gallery_compiles_in_double_and_the_pack_says_so) {
     for (const char* name : {"graphs/gallery/mandelbulb.json", "graphs/gallery/mandelbox.json",
                              "graphs/gallery/menger_twisted.json", "graphs/examples/node_showcase.json",
-                             "graphs/examples/halls_shafts.json", "graphs/examples/hdri_mandelbulb.json",
-                             "graphs/examples/glass_ball.json"}) {
+                             "graphs/gallery/halls_shafts.json", "graphs/gallery/hdri_mandelbulb.json",
+                             "graphs/gallery/glass_ball.json"}) {
         SCOPED_TRACE(name);
         fg::Diagnostics diag;
         fg::CompileOptions options;
-        options.folder = std::string(FG_SOURCE_DIR) + "/graphs/examples";   // the sunset sky's
+        options.folder = std::string(FG_SOURCE_DIR) + "/graphs/gallery";   // the sunset sky's
         options.double_precision = true;
         options.include_glsl = true;
         auto result = fg::compile_graph(fg::test::read_source_file(name), fg::NodeLibrary::builtin(), options, diag);

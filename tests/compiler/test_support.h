@@ -72,9 +72,13 @@ inline Diagnostics check_front(const std::string& text) {
 }
 inline Diagnostics check_front(const nlohmann::json& j) { return check_front(j.dump()); }
 
-// The whole compiler, GLSL and SPIR-V included.
-inline std::optional<CompileResult> compile_text(const std::string& text, Diagnostics& diag) {
-    return compile_graph(text, NodeLibrary::builtin(), {}, diag);
+// The whole compiler, GLSL and SPIR-V included; `folder` is where the graph's files (an
+// environment image) are read from, a source folder ("graphs/gallery").
+inline std::optional<CompileResult> compile_text(const std::string& text, Diagnostics& diag,
+                                                 const std::string& folder = {}) {
+    CompileOptions options;
+    if (!folder.empty()) options.folder = std::string(FG_SOURCE_DIR) + "/" + folder;
+    return compile_graph(text, NodeLibrary::builtin(), options, diag);
 }
 
 // True if some error's pointer and node match and its message contains `text`.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <map>
@@ -77,7 +78,8 @@ TEST_F(FrameHashes, every_gallery_frame_is_bit_identical_to_the_recorded_one) {
     for (const auto& c : cases()) {
         auto it = packs.find(c.graph);
         if (it == packs.end())
-            it = packs.emplace(c.graph, test::compile_pack(test::read_source_file("graphs/" + c.graph + ".json"))).first;
+            it = packs.emplace(c.graph, test::compile_pack(test::read_source_file("graphs/" + c.graph + ".json"),
+                                                          std::filesystem::path("graphs/" + c.graph).parent_path().string())).first;
         FrameSettings fs;
         // Not a multiple of the 8x8 workgroups, so edge groups are covered.
         fs.width = 52;

@@ -32,7 +32,7 @@ TEST(Gallery, has_at_least_ten_scenes) { EXPECT_GE(gallery_scenes().size(), 10u)
 
 TEST_P(GalleryScene, renders_in_frame_and_agrees_with_the_cpu_twin) {
     const std::string name = GetParam();
-    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/" + name + ".json"));
+    Pack pack = test::compile_pack(test::read_source_file("graphs/gallery/" + name + ".json"), "graphs/gallery");
     auto cpu = test::cpu_scene(pack);
 
     FrameSettings fs;

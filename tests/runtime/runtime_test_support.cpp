@@ -28,9 +28,11 @@ std::vector<std::string> source_graph_names(const std::string& folder) {
     return names;
 }
 
-Pack compile_pack(const std::string& graph_text) {
+Pack compile_pack(const std::string& graph_text, const std::string& folder) {
     Diagnostics diag;
-    auto result = compile_graph(graph_text, NodeLibrary::builtin(), {}, diag);
+    CompileOptions options;
+    if (!folder.empty()) options.folder = std::string(FG_SOURCE_DIR) + "/" + folder;
+    auto result = compile_graph(graph_text, NodeLibrary::builtin(), options, diag);
     if (!result) throw std::runtime_error("compile failed:\n" + diag.format());
     auto bytes = pack_bytes(*result);
     auto pack = read_pack(bytes, diag);

@@ -22,7 +22,8 @@ std::string read_source_file(const std::string& relative);
 // new test case without touching the tests.
 std::vector<std::string> source_graph_names(const std::string& folder);
 // Compiles graph text and reads the pack back, as fgplay would.
-Pack compile_pack(const std::string& graph_text);
+// `folder`: the source folder ("graphs/gallery") the graph reads its files from (an environment image).
+Pack compile_pack(const std::string& graph_text, const std::string& folder = {});
 // A size x size frame of one naive stereo pair with the AOVs, and a stereo rig whose left eye is the
 // camera (no IPD): what tests that read a view's AOVs against closed forms render.
 FrameSettings aov_frame(std::uint32_t size);

@@ -27,6 +27,7 @@ nlohmann::ordered_json as_javascript_sends_it(const std::string& text) {
 TEST(GraphDocument, EveryGalleryGraphSavesByteIdenticalWhenUntouched) {
     int checked = 0;
     for (const auto& entry : std::filesystem::directory_iterator(std::string(FG_SOURCE_DIR) + "/graphs/gallery")) {
+        if (entry.path().extension() != ".json") continue;   // the sky image beside the graphs
         std::string text = read(entry.path());
         auto original = nlohmann::ordered_json::parse(text);
         EXPECT_EQ(canonical_graph_text(as_javascript_sends_it(text), &original), text) << entry.path();
