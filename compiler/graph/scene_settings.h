@@ -35,7 +35,7 @@ struct SceneSettings {
         bool operator==(const Camera&) const = default;
     } camera;
     struct Light {
-        glm::dvec3 direction{0.577, 0.577, 0.577};   // towards the light
+        glm::dvec3 direction{0.57735026918962576, 0.57735026918962576, 0.57735026918962576};   // towards the light, unit length
         glm::dvec3 color{1.0, 0.95, 0.9};
         glm::dvec3 ambient{0.12, 0.14, 0.18};
         glm::dvec3 sss_color{1.0, 0.4, 0.25};

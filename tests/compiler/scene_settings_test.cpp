@@ -3,6 +3,7 @@
 // manifest carries the settings the compiler decoded, readable in packs written before.
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "graph/scene_settings.h"
@@ -44,6 +45,15 @@ TEST(SceneSettings, locomotion_limits_reach_the_manifest_typed) {
     EXPECT_EQ(loco.max_speed, 3.5);
     EXPECT_EQ(loco.head_radius, 0.02);
     EXPECT_EQ(loco.speed_per_distance, fg::LocomotionSettings{}.speed_per_distance);
+}
+
+// The default light, for a graph without a light block, is as unit-length as a given one: the
+// shade pass takes dot(n, direction) as Lambert's cosine.
+TEST(SceneSettings, a_graph_without_a_light_is_lit_from_a_unit_direction) {
+    fg::Diagnostics diag;
+    auto r = fg::test::compile_text(minimal_graph().dump(), diag);
+    ASSERT_TRUE(r) << diag.format();
+    EXPECT_NEAR(glm::length(r->manifest.scene.light.direction), 1.0, 1e-15);
 }
 
 TEST(SceneSettings, an_auxiliary_light_is_a_point_or_a_direction_and_there_are_at_most_four) {
