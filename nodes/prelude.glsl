@@ -24,6 +24,17 @@ float fg_conservative_dr(float dr, float bias, float next)
     return min(max(dr * bias, next), FG_DR_MAX);
 }
 
+// How far an orbit got before escaping (a fractal's escape output, for iteration fog): `done`
+// iterations ran before |z|^2 passed bail2, the last one counted by its share of the way there from
+// r2_last in log |z|, so that the count runs on across the iteration bands. The maximum where the
+// orbit never escaped, 0 where it starts outside.
+float fg_escape_share(int done, int iterations, float r2_last, float r2, float bail2)
+{
+    if (r2 <= bail2) return float(iterations);
+    if (done == 0) return 0.0;
+    return float(done - 1) + clamp(log(bail2 / r2_last) / max(log(r2 / r2_last), FG_TINY), 0.0, 1.0);
+}
+
 // The plain running derivative gain * dr + 1, computed so that it never overflows: it stops at
 // FG_DR_MAX, where the distance is already negligible.
 float fg_grow_dr(float dr, float gain)

@@ -30,6 +30,7 @@ EffectSet find_effects(const IrGraph& ir) {
     // The bounce leaves along the shade pass's own normal.
     if (ir.outputs.count("reflection")) e.add(Effect::Reflection), e.add(Effect::Normals);
     if (ir.outputs.count("transmission")) e.add(Effect::Refraction), e.add(Effect::Normals);
+    if (ir.outputs.count("volume_density")) e.add(Effect::Volume);
 
     const auto& s = ir.scene;
     if (s.fog) e.add(Effect::Fog);

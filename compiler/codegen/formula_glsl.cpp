@@ -113,6 +113,7 @@ std::string jacobian_iteration(const FormulaProgram& prog, const FormulaGroupPro
 
 std::string iteration(const FormulaProgram& prog, const FormulaGroupProgram& g, const std::string& indent) {
     std::string out = prog.jacobian ? jacobian_iteration(prog, g, indent) : scalar_iteration(prog, g, indent);
+    out += fmt::format("{}fz_r2_last = fz_r2;\n", indent);
     out += fmt::format("{}fz_r2 = dot(fz_z, fz_z);\n", indent);
     out += fmt::format("{}trap = min(trap, vec4(abs(fz_z.x), abs(fz_z.y), abs(fz_z.z), fz_r2));\n", indent);
     return out;
@@ -138,6 +139,7 @@ std::string formula_glsl(const FormulaProgram& prog) {
                            w, t, w, t, w);
     }
     out += "float fz_r2 = dot(fz_z, fz_z);\n";
+    out += "float fz_r2_last = fz_r2;\n";
     out += "float fz_bail2 = bailout * bailout;\n";
     out += "trap = vec4(abs(fz_z.x), abs(fz_z.y), abs(fz_z.z), fz_r2);\n";
     out += "int fz_i = 0;\n";
@@ -159,6 +161,7 @@ std::string formula_glsl(const FormulaProgram& prog) {
         out += indent + "}\n";
     }
     if (prog.repeat) out += "} while (fz_i < iterations && fz_r2 <= fz_bail2);\n";
+    out += "escape = fg_escape_share(fz_i, iterations, fz_r2_last, fz_r2, fz_bail2);\n";
     out += "float fz_r = sqrt(fz_r2);\n";
     switch (prog.estimate) {
         // dr is 0 where a power map's gain is (a quaternion square at z = 0): the maxes keep both finite.

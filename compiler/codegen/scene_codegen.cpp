@@ -121,10 +121,21 @@ std::vector<bool> SceneCodegen::needed_by(const std::vector<const IrInput*>& roo
     return needed;
 }
 
+namespace {
+bool is_volume_output(const std::string& name) { return name.starts_with("volume_"); }
+}  // namespace
+
 std::vector<const IrInput*> SceneCodegen::surface_roots() const {
     std::vector<const IrInput*> roots;
     for (const auto& [name, in] : ir_.outputs)
-        if (name != "distance") roots.push_back(&in);
+        if (name != "distance" && !is_volume_output(name)) roots.push_back(&in);
+    return roots;
+}
+
+std::vector<const IrInput*> SceneCodegen::volume_roots() const {
+    std::vector<const IrInput*> roots;
+    for (const auto& [name, in] : ir_.outputs)
+        if (is_volume_output(name)) roots.push_back(&in);
     return roots;
 }
 
@@ -282,7 +293,9 @@ void SceneCodegen::shading_function_head(GlslWriter& w, const char* name, const 
 }
 
 void SceneCodegen::surface_function(GlslWriter& w) const {
-    bodies(w, needed_by(surface_roots()), needed_by({&ir_.outputs.at("distance")}));
+    std::vector<const IrInput*> roots = surface_roots(), volume = volume_roots();
+    roots.insert(roots.end(), volume.begin(), volume.end());
+    bodies(w, needed_by(roots), needed_by({&ir_.outputs.at("distance")}));
     w.line("struct FgSurface { vec3 albedo; float diffuse; float ao; float sss; float rim; vec3 emission; float shadow; "
            "vec3 specular; vec3 reflection; vec3 transmission; float ior; vec3 absorption; };",
            generated());
@@ -305,6 +318,26 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     w.blank();
     view_terms_function(w, field);
     if (!ir_.scene.light.auxiliary.empty()) light_terms_function(w);
+    if (ir_.outputs.count("volume_density")) volume_function(w);
+}
+
+void SceneCodegen::volume_function(GlslWriter& w) const {
+    // A point of the medium is on no surface: it has no normal and no view (as the distance). The
+    // scene's distance there comes with it, from the same node calls where the medium reads the
+    // fractal (iteration fog), so the march through the medium can take its steps by it.
+    w.line(double_ ? "vec4 fg_scene_volume(vec3 fg_relative_p, out float fg_distance)" : "vec4 fg_scene_volume(vec3 p, out float fg_distance)",
+           generated());
+    w.line("{", generated());
+    if (double_) w.line("    dvec3 p = fg_anchor() + dvec3(fg_relative_p);", generated());
+    std::vector<const IrInput*> roots = volume_roots();
+    roots.push_back(&ir_.outputs.at("distance"));
+    function_body(w, roots, Context::Distance);
+    w.line(fmt::format("    fg_distance = {};", output_or("distance", "0.0", Context::Distance)), generated());
+    w.line(fmt::format("    return vec4({}, {});", output_or("volume_color", "vec3(1.0)", Context::Distance),
+                       output_or("volume_density", "0.0", Context::Distance)),
+           generated());
+    w.line("}", generated());
+    w.blank();
 }
 
 std::string SceneCodegen::output_or(const char* name, const char* fallback, Context context) const {

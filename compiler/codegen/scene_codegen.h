@@ -6,6 +6,8 @@
 //   FgSurface fg_scene_view_terms(...)   only the terms that read the view (shading reuse)
 //   FgLightTerms fg_scene_light_terms(..., fg_light, fg_light_distance)   diffuse, shadow and specular
 //       towards any light (scenes with auxiliary lights)
+//   vec4 fg_scene_volume(vec3 p, out float distance)   the medium's colour and density, and the
+//       scene's distance (graphs that bind volume_density)
 // With scene.precision "double" the bodies are lowered to double (double_lowering.h) and evaluated
 // at fg_anchor() + p: the passes march in float relative to the camera, whose position the frame
 // uniforms hold in double (hi + lo floats), so positions keep their digits at any zoom.
@@ -53,6 +55,9 @@ private:
     // Nodes the distance (or the surface outputs) need, by IR index.
     std::vector<bool> needed_by(const std::vector<const IrInput*>& roots) const;
     std::vector<const IrInput*> surface_roots() const;
+    // The medium's outputs (volume_density, volume_color): evaluated along rays, not at the hit.
+    std::vector<const IrInput*> volume_roots() const;
+    void volume_function(GlslWriter& w) const;
     // Whether a value depends on the direction to the camera, and the scalar surface outputs that do.
     bool reads_to_camera(const IrInput& root) const;
     std::vector<const IrInput*> view_roots() const;

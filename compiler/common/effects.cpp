@@ -7,7 +7,7 @@ namespace fg {
 namespace {
 constexpr std::array<std::string_view, static_cast<std::size_t>(Effect::Count)> kNames{
     "normals", "diffuse", "ao", "sss", "rim", "palette", "trap",
-    "emission", "fog", "glow", "vignette", "background_gradient", "foveation", "shadow", "specular", "reflection", "lights", "environment", "refraction"};
+    "emission", "fog", "glow", "vignette", "background_gradient", "foveation", "shadow", "specular", "reflection", "lights", "environment", "refraction", "volume"};
 }
 
 std::string_view effect_name(Effect e) { return kNames[static_cast<std::size_t>(e)]; }

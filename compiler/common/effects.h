@@ -30,6 +30,7 @@ enum class Effect : std::uint32_t {
     Lights,              // auxiliary lights (scene.light.auxiliary): the light's terms again for each
     Environment,         // light from a lat-long HDR image or a uniform sky (scene.environment)
     Refraction,          // glass (light.refraction): the shade pass bends the ray through the body and out
+    Volume,              // a glowing medium drawn as nodes (volume_density, light.iteration_fog): marched along each eye ray
     Count
 };
 

@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 20> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 21> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -67,6 +67,9 @@ inline constexpr std::array<GlobalKnob, 20> kGlobalKnobs{{
     {20, "step_fraction", "FG_STEP_FRACTION", ValueType::Float, 1.0, 0.01, 1.0,
      "each march step advances this fraction of the estimate (already in step_scale) while hit tests read "
      "the whole estimate: shorter steps without a fatter surface (Mandelbulber's DE factor)"},
+    {21, "volume_steps", "FG_VOLUME_STEPS", ValueType::Int, 32, 1, 1024,
+     "points of a glowing medium (volume_density) evaluated along each eye ray inside the bounds; each costs one "
+     "evaluation of the medium's nodes"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

@@ -12,6 +12,7 @@ namespace glsl {
 double fg_conservative_dr(double dr, double bias, double next);
 double fg_scale_dr(double dr, double factor);
 double fg_jacobian_norm(glm::dvec4 a, glm::dvec4 b, glm::dvec4 c);
+double fg_escape_share(int done, int iterations, double r2_last, double r2, double bail2);
 }  // namespace glsl
 
 namespace {
@@ -152,7 +153,7 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     // A Jacobian formula's columns start as the identity (a 4D orbit's w does not move with p).
     Orbit orbit{start, c, {glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0)}, 1.0, 0};
     const glm::dvec4& z = orbit.z;
-    double r2 = glm::dot(z, z);
+    double r2 = glm::dot(z, z), r2_last = r2;
     glm::dvec4 trap(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2);
     int i = 0;
     Scratch scratch;
@@ -165,6 +166,7 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
                 orbit.iteration = i;
                 if (prog.jacobian) iterate_jacobian(seg.group, in, orbit, bias, scratch, *tangents);
                 else iterate(seg.group, in, orbit, bias, scratch);
+                r2_last = r2;
                 r2 = glm::dot(z, z);
                 trap = glm::min(trap, glm::dvec4(std::abs(z.x), std::abs(z.y), std::abs(z.z), r2));
             }
@@ -197,6 +199,7 @@ void CpuFormula::run(const CpuValue* in, CpuValue* out) const {
     }
     out[0] = CpuValue::of(distance);
     out[1] = CpuValue::of(trap);
+    out[2] = CpuValue::of(glsl::fg_escape_share(i, iterations, r2_last, r2, bail2));
 }
 
 }  // namespace fg

@@ -29,6 +29,8 @@ const std::vector<GraphOutputSpec>& graph_output_specs() {
         {"transmission", ValueType::Vec3, false, "the share of the light refracted through the body that the point passes on (light.refraction)"},
         {"ior", ValueType::Float, false, "the body's refractive index where it refracts; unbound: 1.5"},
         {"absorption", ValueType::Vec3, false, "absorption per world unit inside a refracting body (Beer-Lambert); unbound: 0"},
+        {"volume_density", ValueType::Float, false, "extinction per world unit of a glowing medium around the surface (light.iteration_fog), evaluated along each eye ray up to the hit"},
+        {"volume_color", ValueType::Vec3, false, "the light the medium gives per unit of optical depth where volume_density is bound; unbound: white"},
     };
     return specs;
 }

@@ -467,6 +467,10 @@ private:
         for (const auto& s : graph_output_specs())
             if (s.required && !os.contains(s.name))
                 diag_.error(fmt::format("missing required output \"{}\" ({})", s.name, s.doc), "/outputs");
+        if (os.contains("volume_color") && !os.contains("volume_density"))
+            diag_.error("output \"volume_color\" colours a medium whose density is unbound: bind \"volume_density\" too "
+                        "(light.iteration_fog's density)",
+                        "/outputs/volume_color");
     }
 
     // Every reference names an existing node and output port, or an existing param.

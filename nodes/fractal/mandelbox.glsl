@@ -1,5 +1,5 @@
 void fg_fractal_mandelbox(vec3 p, float scale, float min_radius, float fixed_radius, float fold_limit,
-                          int iterations, float bias, OUT(float) distance, OUT(vec4) trap)
+                          int iterations, float bias, OUT(float) distance, OUT(vec4) trap, OUT(float) escape)
 {
     vec3 z = p;
     float dr = 1.0;
@@ -8,9 +8,12 @@ void fg_fractal_mandelbox(vec3 p, float scale, float min_radius, float fixed_rad
     float fixed_r2 = max(fixed_radius * fixed_radius, min_r2);
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
-    for (int i = 0; i < iterations; i++) {
+    float r2_last = r2;
+    int i = 0;
+    for (; i < iterations; i++) {
         fg_count_fractal_iteration();
         if (r2 > 1e4) break;
+        r2_last = r2;
         // Box fold: reflect each coordinate that leaves [-fold_limit, fold_limit].
         z = clamp(z, -fold_limit, fold_limit) * 2.0 - z;
         // Sphere fold: invert the shell between min and fixed radius, scale up the inside.
@@ -25,4 +28,5 @@ void fg_fractal_mandelbox(vec3 p, float scale, float min_radius, float fixed_rad
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }
     distance = sqrt(r2) / dr;
+    escape = fg_escape_share(i, iterations, r2_last, r2, 1e4);
 }

@@ -1,11 +1,13 @@
 void fg_fractal_mandelbulb(vec3 p, float power, int iterations, float bailout, float bias,
-                           OUT(float) distance, OUT(vec4) trap)
+                           OUT(float) distance, OUT(vec4) trap, OUT(float) escape)
 {
     vec3 z = p;
     float dr = 1.0;
     float r = length(z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r * r);
-    for (int i = 0; i < iterations; i++) {
+    float r_last = r;
+    int i = 0;
+    for (; i < iterations; i++) {
         fg_count_fractal_iteration();
         // An orbit whose next radius would pass FG_RADIUS_MAX escapes in the next step anyway, and
         // the estimate is (nearly) the same one step earlier: stop before float overflows.
@@ -16,11 +18,13 @@ void fg_fractal_mandelbulb(vec3 p, float power, int iterations, float bailout, f
         float phi = fg_safe_atan(z.x, z.z) * power;
         dr = fg_conservative_dr(dr, bias, fg_grow_dr(dr, power * pow(max(r, FG_TINY), power - 1.0)));
         z = p + zr * vec3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
+        r_last = r;
         r = length(z);
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r * r));
     }
     // log(r) * r tends to 0 at r = 0: the max keeps log finite there.
     distance = 0.5 * log(max(r, FG_TINY)) * r / dr;
+    escape = fg_escape_share(i, iterations, r_last * r_last, r * r, bailout * bailout);
     // Far away the estimate grows like r log r, faster than the true distance. Orbits that leave
     // |z| = 2 escape (for power >= 2), so the bulb lies inside that ball and |p| - 2 bounds the
     // distance from below. Beyond twice that radius the smaller of the two never oversteps; nearer

@@ -132,3 +132,23 @@ TEST(EffectSet, glass_is_compiled_only_where_the_graph_binds_a_transmission) {
     EXPECT_NE(glsl(r, "shade").find("#define FG_HAS_REFRACTION"), std::string::npos);
     EXPECT_NE(glsl(r, "aov").find("#define FG_HAS_REFRACTION"), std::string::npos);
 }
+
+TEST(EffectSet, a_medium_is_compiled_only_where_the_graph_binds_a_volume_density) {
+    auto plain = compile(minimal_graph());
+    EXPECT_FALSE(plain.manifest.effects.has(Effect::Volume));
+    EXPECT_EQ(glsl(plain, "shade").find("vec4 fg_scene_volume("), std::string::npos);
+    auto g = minimal_graph();
+    g["nodes"].push_back({{"id", "fog"}, {"type", "light.iteration_fog"}, {"inputs", {{"escape", "ball.distance"}}}});
+    g["outputs"]["volume_density"] = "fog.density";
+    g["outputs"]["volume_color"] = "fog.color";
+    auto r = compile(g);
+    EXPECT_TRUE(r.manifest.effects.has(Effect::Volume));
+    for (const char* pass : {"shade", "aov"}) {
+        EXPECT_NE(glsl(r, pass).find("#define FG_HAS_VOLUME"), std::string::npos) << pass;
+        EXPECT_NE(glsl(r, pass).find("vec4 fg_scene_volume("), std::string::npos) << pass;
+    }
+    // The medium is not a surface output: the hit's shading does not evaluate it.
+    const std::string shade = glsl(r, "shade");
+    const std::string surface = shade.substr(shade.find("FgSurface fg_scene_surface("), shade.find("return s;", shade.find("FgSurface fg_scene_surface(")) - shade.find("FgSurface fg_scene_surface("));
+    EXPECT_EQ(surface.find("fg_light_iteration_fog("), std::string::npos) << surface;
+}

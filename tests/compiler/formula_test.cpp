@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <fmt/format.h>
 
 #include "cpu/cpu_evaluator.h"
 #include "cpu/cpu_node_registry.h"
@@ -248,6 +249,30 @@ TEST(Formula, a_hybrid_runs_its_schedule_and_compiles) {
     for (double x = -2.0; x <= 2.0; x += 0.25) differ += std::abs(ev->distance({x, 0.3, 0.2}) - ev_other->distance({x, 0.3, 0.2})) > 1e-6;
     EXPECT_GT(differ, 8);
     for (double x = -6.0; x <= 6.0; x += 0.5) EXPECT_TRUE(std::isfinite(ev->distance({x, 0.1, -0.2}))) << x;
+}
+
+TEST(Formula, the_escape_output_counts_the_iterations_to_the_bailout_in_log_steps) {
+    // z -> 2z from |p| = r reaches |z| = 2^n r: it passes the bailout B after log2(B / r)
+    // iterations, which the escape output gives exactly (the last one counted in log |z|), capped
+    // at the maximum where the orbit stays inside, and 0 where it starts outside.
+    const double bailout = 100.0;
+    const int iterations = 12;
+    json g = fg::test::minimal_graph();
+    g["nodes"][0] = json::parse(fmt::format(R"({{"id": "f", "type": "fractal.formula",
+        "inputs": {{"iterations": {}, "bailout": {}, "bias": 0.0}},
+        "formula": {{"groups": [{{"name": "double", "nodes": [{{"id": "s", "type": "stage.scale", "inputs": {{"scale": 2.0}}}}]}}]}}}})",
+                                            iterations, bailout));
+    g["outputs"] = {{"distance", "f.distance"}, {"ao", "f.escape"}};
+    Diagnostics diag;
+    auto ir = lower(g, diag);
+    ASSERT_TRUE(ir) << diag.format();
+    auto ev = CpuEvaluator::create(*ir, diag);
+    ASSERT_TRUE(ev) << diag.format();
+    for (double r : {0.05, 0.3, 1.0, 2.5, 7.0, 60.0, 99.0, 150.0}) {
+        const glm::dvec3 p = r * glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+        const double expected = r > bailout ? 0.0 : std::min(std::log2(bailout / r), double(iterations));
+        EXPECT_NEAR(ev->output("ao", p, {})->f(), expected, 1e-9) << "|p| = " << r;
+    }
 }
 
 TEST(Formula, mistakes_in_a_body_are_errors_at_their_pointer) {

@@ -160,6 +160,12 @@ TEST(GraphValidation, the_distance_output_is_required) {
     EXPECT_TRUE(has_error(check_front(g), "/outputs", "", "missing required output \"distance\""));
 }
 
+TEST(GraphValidation, a_medium_colour_without_its_density_is_reported) {
+    auto g = minimal_graph();
+    g["outputs"]["volume_color"] = json::array({1.0, 0.5, 0.2});
+    EXPECT_TRUE(has_error(check_front(g), "/outputs/volume_color", "", "bind \"volume_density\" too"));
+}
+
 TEST(GraphValidation, an_unknown_output_name_lists_the_outputs) {
     auto g = minimal_graph();
     g["outputs"]["colour"] = "tone.color";

@@ -4,6 +4,7 @@
 //! include: post_effects.glsl
 //! include-after-scene: environment.glsl
 //! include-after-scene: shading.glsl
+//! include-after-scene: volume.glsl
 // The terms of one eye's picture for a compositor (OpenEXR output, docs/camera-path.md): the HDR
 // beauty before the tone map, camera depth and world position, normal, AO, albedo, the diffuse
 // factor, the orbit trap, the specular reflectance, the shadow, the mirror bounce's colour and the
@@ -51,7 +52,11 @@ void main()
     scattered = fg_fog_light(ro, rd, t);
 #endif
     if (t < 0.0) {
-        vec3 beauty = fg_post_effects(fg_background(rd), pixel, size, ro, rd, t, closest, scattered);
+        vec3 background = fg_background(rd);
+#ifdef FG_HAS_VOLUME
+        background = fg_through_volume(background, ro, rd, t);
+#endif
+        vec3 beauty = fg_post_effects(background, pixel, size, ro, rd, t, closest, scattered);
         imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
         // A miss is infinitely far (as Nuke and Blender read depth); it has no surface.
         imageStore(fg_position, pixel, vec4(0.0, 0.0, 0.0, uintBitsToFloat(0x7f800000u)));
@@ -77,7 +82,11 @@ void main()
 #else
     FgShading s = fg_shade_hit(p, rd, vec3(0.0, 1.0, 0.0), t);
 #endif
-    vec3 beauty = fg_post_effects(s.color, pixel, size, ro, rd, t, closest, scattered);
+    vec3 shaded = s.color;
+#ifdef FG_HAS_VOLUME
+    shaded = fg_through_volume(shaded, ro, rd, t);
+#endif
+    vec3 beauty = fg_post_effects(shaded, pixel, size, ro, rd, t, closest, scattered);
     imageStore(fg_beauty, pixel, vec4(beauty * fg_scene.exposure, 1.0));
     // Camera depth: along the view axis in perspective, along the ray in a panorama; metres.
     GpuView v = fg_frame.views[pc.view];

@@ -6,9 +6,10 @@
 //! include-after-scene: environment.glsl
 //! include-after-scene: shading.glsl
 //! include-after-scene: kept_shading.glsl
+//! include-after-scene: volume.glsl
 // Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a
 // finite-difference normal only if something needs it, and the background for misses; then the
-// post effects the pack lists (fog, glow, vignette: each a function of this pixel alone, so they
+// post effects the pack lists (a medium drawn as nodes, fog, glow, vignette: each a function of this pixel alone, so they
 // cost no pass of their own) and the tone map, into the final image.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -103,6 +104,9 @@ void fg_store_final(ivec2 pixel, vec3 color, vec3 ro, vec3 rd, float t)
     float closest = 0.0;
 #ifdef FG_HAS_GLOW
     closest = imageLoad(fg_glow, pixel).x;
+#endif
+#ifdef FG_HAS_VOLUME
+    color = fg_through_volume(color, ro, rd, t);
 #endif
     vec3 scattered = vec3(0.0);
 #ifdef FG_HAS_FOG

@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""What the march through a medium (iteration fog) costs and buys: a graph's frame rendered by
+fgplay at several volume_steps, in turns (so that load on a shared machine hits all alike), against
+the same graph without its medium and against a reference of many steps.
+
+    bench/volume_steps.py BUILD GRAPH.json [--size 384] [--runs 3] [--steps 8,16,32,64,128] [--reference 1024]
+
+Prints a Markdown table: the median shade pass time, its ratio to the graph without the medium, and
+the left eye's error against the reference (RMS in 8-bit levels, PSNR). Each run renders 2 frames and
+keeps the second (lavapipe compiles a pipeline on its first dispatch)."""
+import argparse
+import json
+import pathlib
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from PIL import Image
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("build")
+    ap.add_argument("graph")
+    ap.add_argument("--size", type=int, default=384)
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--steps", default="8,16,32,64,128")
+    ap.add_argument("--reference", type=int, default=1024)
+    a = ap.parse_args()
+    steps = [int(s) for s in a.steps.split(",")]
+    work = pathlib.Path(tempfile.mkdtemp())
+    graph = json.loads(pathlib.Path(a.graph).read_text())
+    bare = dict(graph, outputs={k: v for k, v in graph["outputs"].items() if not k.startswith("volume_")})
+    (work / "bare.json").write_text(json.dumps(bare))
+    for name, path in (("fog", a.graph), ("bare", work / "bare.json")):
+        subprocess.run([f"{a.build}/compiler/fgc", "compile", str(path), "-o", str(work / f"{name}.fgpack")],
+                       check=True, capture_output=True)
+
+    def shade_ms(pack, steps_knob, out):
+        result = subprocess.run(
+            [f"{a.build}/runtime/fgplay", "render", str(pack), "--out", str(out), "--size", f"{a.size}x{a.size}",
+             "--frames", "2"] + (["--knob", f"volume_steps={steps_knob}"] if steps_knob else []),
+            check=True, capture_output=True, text=True)
+        found = re.findall(r"^frame 1:.*shade ([0-9.]+) ms", result.stdout + result.stderr, re.M)
+        return float(found[-1])
+
+    cases = [("without the medium", "bare", 0)] + [(f"{s} steps", "fog", s) for s in steps]
+    times = {label: [] for label, _, _ in cases}
+    for run in range(a.runs):
+        for label, pack, s in cases:
+            times[label].append(shade_ms(work / f"{pack}.fgpack", s, work / label.replace(" ", "_")))
+        print(f"\r  run {run + 1} of {a.runs}", end="", file=sys.stderr)
+    print(file=sys.stderr)
+    shade_ms(work / "fog.fgpack", a.reference, work / "reference")
+    reference = np.asarray(Image.open(work / "reference" / "left_000001.png" if (work / "reference" / "left_000001.png").exists()
+                                      else work / "reference" / "left.png").convert("RGB"), dtype=float)
+
+    def error(label):
+        folder = work / label.replace(" ", "_")
+        name = "left_000001.png" if (folder / "left_000001.png").exists() else "left.png"
+        img = np.asarray(Image.open(folder / name).convert("RGB"), dtype=float)
+        rms = float(np.sqrt(np.mean((img - reference) ** 2)))
+        return rms, 99.0 if rms == 0 else 20 * np.log10(255.0 / rms)
+
+    base = statistics.median(times["without the medium"])
+    print(f"| {pathlib.Path(a.graph).name}, {a.size}² per eye | shade ms | against no medium | RMS against {a.reference} steps | PSNR |")
+    print("|---|---:|---:|---:|---:|")
+    for label, _, _ in cases:
+        ms = statistics.median(times[label])
+        rms, psnr = error(label)
+        print(f"| {label} | {ms:.1f} | {ms / base:.2f} | {rms:.2f} | {psnr:.1f} dB |")
+
+
+if __name__ == "__main__":
+    main()
