@@ -5,7 +5,7 @@ the same graph without its medium and against a reference of many steps.
 
     bench/volume_steps.py BUILD GRAPH.json [--size 384] [--runs 3] [--steps 8,16,32,64,128] [--reference 1024]
 
-Prints a Markdown table: the median shade pass time, its ratio to the graph without the medium, and
+Prints a Markdown table: the median frame and shade pass times, their ratios to the graph without the medium, and
 the left eye's error against the reference (RMS in 8-bit levels, PSNR). Each run renders 2 frames and
 keeps the second (lavapipe compiles a pipeline on its first dispatch)."""
 import argparse
@@ -44,8 +44,8 @@ def main():
             [f"{a.build}/runtime/fgplay", "render", str(pack), "--out", str(out), "--size", f"{a.size}x{a.size}",
              "--frames", "2"] + (["--knob", f"volume_steps={steps_knob}"] if steps_knob else []),
             check=True, capture_output=True, text=True)
-        found = re.findall(r"^frame 1:.*shade ([0-9.]+) ms", result.stdout + result.stderr, re.M)
-        return float(found[-1])
+        found = re.findall(r"^frame 1:.*GPU frame ([0-9.]+) ms.*shade ([0-9.]+) ms", result.stdout + result.stderr, re.M)
+        return float(found[-1][0]), float(found[-1][1])
 
     cases = [("without the medium", "bare", 0)] + [(f"{s} steps", "fog", s) for s in steps]
     times = {label: [] for label, _, _ in cases}
@@ -55,23 +55,26 @@ def main():
         print(f"\r  run {run + 1} of {a.runs}", end="", file=sys.stderr)
     print(file=sys.stderr)
     shade_ms(work / "fog.fgpack", a.reference, work / "reference")
-    reference = np.asarray(Image.open(work / "reference" / "left_000001.png" if (work / "reference" / "left_000001.png").exists()
-                                      else work / "reference" / "left.png").convert("RGB"), dtype=float)
+    def second_frame(folder):
+        return np.asarray(Image.open(folder / "left_0001.png").convert("RGB"), dtype=float)
+
+    reference = second_frame(work / "reference")
 
     def error(label):
-        folder = work / label.replace(" ", "_")
-        name = "left_000001.png" if (folder / "left_000001.png").exists() else "left.png"
-        img = np.asarray(Image.open(folder / name).convert("RGB"), dtype=float)
-        rms = float(np.sqrt(np.mean((img - reference) ** 2)))
+        rms = float(np.sqrt(np.mean((second_frame(work / label.replace(" ", "_")) - reference) ** 2)))
         return rms, 99.0 if rms == 0 else 20 * np.log10(255.0 / rms)
 
-    base = statistics.median(times["without the medium"])
-    print(f"| {pathlib.Path(a.graph).name}, {a.size}² per eye | shade ms | against no medium | RMS against {a.reference} steps | PSNR |")
-    print("|---|---:|---:|---:|---:|")
+    def median(label, k):
+        return statistics.median(t[k] for t in times[label])
+
+    frame0, shade0 = median("without the medium", 0), median("without the medium", 1)
+    print(f"| {pathlib.Path(a.graph).name}, {a.size}² per eye | frame ms | against no medium | shade ms | against no medium "
+          f"| RMS against {a.reference} steps | PSNR |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for label, _, _ in cases:
-        ms = statistics.median(times[label])
+        frame, shade = median(label, 0), median(label, 1)
         rms, psnr = error(label)
-        print(f"| {label} | {ms:.1f} | {ms / base:.2f} | {rms:.2f} | {psnr:.1f} dB |")
+        print(f"| {label} | {frame:.1f} | {frame / frame0:.2f} | {shade:.1f} | {shade / shade0:.2f} | {rms:.2f} | {psnr:.1f} dB |")
 
 
 if __name__ == "__main__":
