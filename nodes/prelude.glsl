@@ -24,6 +24,19 @@ float fg_conservative_dr(float dr, float bias, float next)
     return min(max(dr * bias, next), FG_DR_MAX);
 }
 
+// Shirley and Chiu's concentric map of the unit square onto the unit disc: it keeps points that
+// cover the square evenly spread over the disc.
+vec2 fg_concentric_disc(vec2 square)
+{
+    vec2 u = 2.0 * square - 1.0;
+    if (u.x == 0.0 && u.y == 0.0) return vec2(0.0);
+    const float quarter = 0.785398163;
+    bool wide = abs(u.x) > abs(u.y);
+    float r = wide ? u.x : u.y;
+    float phi = wide ? quarter * (u.y / u.x) : 2.0 * quarter - quarter * (u.x / u.y);
+    return vec2(r * cos(phi), r * sin(phi));
+}
+
 // How far an orbit got before escaping (a fractal's escape output, for iteration fog): `done`
 // iterations ran before |z|^2 passed bail2, the last one counted by its share of the way there from
 // r2_last in log |z|, so that the count runs on across the iteration bands. The maximum where the

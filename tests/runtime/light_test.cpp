@@ -59,7 +59,7 @@ RenderedFrame render(const Pack& pack) {
 // A sphere of `radius` at `height` over the plane y = 0, lit at 45 degrees from +x by a light of
 // `angle_deg` radius; the camera 3 above the point x = -1, looking straight down. `never_negative`
 // clamps the distance at 0 inside, as the Mandelbox's and other folding fractals' estimates are.
-Pack sphere_over_a_plane(double radius, double height, double angle_deg, double start, bool never_negative = false) {
+Pack sphere_over_a_plane(double radius, double height, double angle_deg, double start, bool never_negative = false, int rays = 1) {
     return test::compile_pack(fmt::format(R"({{
       "format": "fractograph-graph", "version": 1, "name": "sphere over a plane",
       "nodes": [
@@ -68,12 +68,12 @@ Pack sphere_over_a_plane(double radius, double height, double angle_deg, double 
         {{"id": "ground", "type": "prim.plane"}},
         {{"id": "both", "type": "op.union", "inputs": {{"a": "ball.distance", "b": "ground.distance"}}}},
         {{"id": "outside", "type": "math.max", "inputs": {{"a": "both.distance", "b": 0.0}}}},
-        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": {4}, "max_distance": 6.0, "steps": 256}}}}
+        {{"id": "shadow", "type": "light.soft_shadow", "inputs": {{"angle": {2}, "start": {4}, "max_distance": 6.0, "steps": 256, "rays": {6}}}}}
       ],
       "outputs": {{"distance": "{5}", "shadow": "shadow.shadow"}},
       "scene": {{"camera": {{"position": [-1, 3, 0], "target": [-1, 0, 0], "up": [0, 0, -1], "fov_deg": {3}}},
                 "light": {{"direction": [0.70710678, 0.70710678, 0]}}, "bounds": {{"radius": 20}}}}
-    }})", radius, height, angle_deg, kFovDeg, start, never_negative ? "outside.value" : "both.distance"));
+    }})", radius, height, angle_deg, kFovDeg, start, never_negative ? "outside.value" : "both.distance", rays));
 }
 
 // The solution r of 0.25 (1 + r)^2 (2 - r) = level (soft_shadow.glsl's profile), by bisection.
@@ -181,6 +181,12 @@ TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
     const std::vector<double> one_sample = shadow_row(r.render(r.scene_camera(), 0.0));
     r.set_light_sample(std::nullopt);
     const std::vector<double> area = shadow_row(render_samples(r, r.scene_camera(), 0.0, 0, 64));
+    // Four rays a sample, a lattice over the disc shifted by the sample's point: 16 samples of them
+    // against 16 of one ray.
+    Pack four_rays = sphere_over_a_plane(radius, height, angle_deg, start, false, 4);
+    HeadlessRenderer r4(test::shared_context(), four_rays, test::aov_frame(kSize), test::eye_at_camera(kSize));
+    const std::vector<double> area16 = shadow_row(render_samples(r, r.scene_camera(), 0.0, 0, 16));
+    const std::vector<double> area16_four = shadow_row(render_samples(r4, r4.scene_camera(), 0.0, 0, 16));
 
     // The share of the light's disc (radius tan a one unit along the light, as the node samples it)
     // seen from the plane at x, past the sphere.
@@ -204,7 +210,7 @@ TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
     };
     const double half_width = 3.0 * std::tan(glm::radians(kFovDeg / 2.0));
     auto x_of = [&](double column) { return -1.0 + (column / kSize - 0.5) * 2.0 * half_width; };
-    double area_error = 0.0, area_worst = 0.0, cone_error = 0.0;
+    double area_error = 0.0, area_worst = 0.0, cone_error = 0.0, error16 = 0.0, error16_four = 0.0;
     int penumbra = 0, umbra = 0, soft_in_one_sample = 0;
     for (std::size_t x = 2; x + 2 < kSize; ++x) {
         // The pixel's samples spread over its width: the reference averages four points across it.
@@ -217,7 +223,11 @@ TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
         area_error += std::abs(area[x] - reference);
         area_worst = std::max(area_worst, std::abs(area[x] - reference));
         cone_error += std::abs(cone[x] - reference);
+        error16 += std::abs(area16[x] - reference);
+        error16_four += std::abs(area16_four[x] - reference);
     }
+    error16 /= std::max(penumbra, 1);
+    error16_four /= std::max(penumbra, 1);
     area_error /= std::max(penumbra, 1);
     cone_error /= std::max(penumbra, 1);
     const std::string figures = fmt::format(
@@ -231,6 +241,12 @@ TEST_F(Light, accumulated_samples_make_the_shadow_a_true_area_light) {
     EXPECT_LT(area_error, 0.02) << figures;
     EXPECT_LT(area_worst, 0.08) << figures;
     EXPECT_LT(area_error, 0.6 * cone_error) << "the area light is closer to the disc's share than the cone profile: " << figures;
+    const std::string rays = fmt::format("16 samples: one ray a sample {:.4f} from the disc's share on average, four rays {:.4f}",
+                                         error16, error16_four);
+    RecordProperty("rays", rays);
+    std::printf("%s\n", rays.c_str());
+    EXPECT_LT(error16_four, 0.6 * error16) << rays;
+    EXPECT_LT(error16_four, 0.02) << rays;
 }
 
 TEST_F(Light, a_highlight_peaks_where_the_normal_halves_the_light_and_the_view) {

@@ -235,8 +235,9 @@ vec3 fg_linear_to_srgb(vec3 c)
     return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
 }
 
-// Area lights (the implicit input `light_sample`, light.soft_shadow): this sample's point on a
-// light's unit disc (xy) and 1 while offline samples accumulate (z), or all 0 in a single frame.
+// Area lights (the implicit input `light_sample`, light.soft_shadow): this sample's point of the unit
+// square (xy, which the node maps onto the light's disc) and 1 while offline samples accumulate (z),
+// or all 0 in a single frame.
 // Sample k of a pixel is point k of the Sobol (0,2)-sequence, Owen-scrambled by a seed of the
 // pixel's own (Burley's hash-based scrambling): every prefix of a pixel's points covers the disc
 // evenly, each power-of-two prefix stratified in every elementary interval, so a penumbra's error
@@ -296,12 +297,5 @@ vec2 fg_sample_square(uint stream)
 vec3 fg_light_sample()
 {
     if (fg_frame.area_light.z == 0.0) return vec3(0.0);
-    vec2 u = 2.0 * fg_sample_square(0u) - 1.0;
-    if (u.x == 0.0 && u.y == 0.0) return vec3(0.0, 0.0, 1.0);
-    // Shirley and Chiu's concentric map of the square onto the disc keeps the points evenly spread.
-    const float quarter = 0.785398163;
-    bool wide = abs(u.x) > abs(u.y);
-    float r = wide ? u.x : u.y;
-    float phi = wide ? quarter * (u.y / u.x) : 2.0 * quarter - quarter * (u.x / u.y);
-    return vec3(r * cos(phi), r * sin(phi), 1.0);
+    return vec3(fg_sample_square(0u), 1.0);
 }
