@@ -1,6 +1,6 @@
 void fg_fractal_fold_iterate(vec3 p, bool mirror, bool sort, float box_limit, float min_radius, float fixed_radius, vec3 axis,
                              float angle_deg, float scale, vec3 offset, float add_point, float radius, int iterations,
-                             float bailout, float bias, OUT(float) distance, OUT(vec4) trap)
+                             float bailout, float bias, OUT(float) distance, OUT(vec4) trap, OUT(float) escape)
 {
     vec3 z = p;
     float dr = 1.0;
@@ -12,9 +12,12 @@ void fg_fractal_fold_iterate(vec3 p, bool mirror, bool sort, float box_limit, fl
     float bail2 = bailout * bailout;
     float r2 = dot(z, z);
     trap = vec4(abs(z.x), abs(z.y), abs(z.z), r2);
-    for (int i = 0; i < iterations; i++) {
+    float r2_last = r2;
+    int i = 0;
+    for (; i < iterations; i++) {
         fg_count_fractal_iteration();
         if (r2 > bail2) break;
+        r2_last = r2;
         // Each stage is a fold (a piecewise isometry) or a uniform scale, so dr tracks them exactly.
         if (mirror) z = abs(z);
         // Sorting the coordinates (x >= y >= z) is three plane reflections: the octahedral fold.
@@ -38,4 +41,5 @@ void fg_fractal_fold_iterate(vec3 p, bool mirror, bool sort, float box_limit, fl
         trap = min(trap, vec4(abs(z.x), abs(z.y), abs(z.z), r2));
     }
     distance = (sqrt(r2) - radius) / max(dr, FG_TINY);
+    escape = fg_escape_share(i, iterations, r2_last, r2, bail2);
 }
