@@ -9,8 +9,8 @@
 //! include-after-scene: volume.glsl
 // Shades each hit of one eye: the graph's surface outputs (albedo, fake lighting, emission), a
 // finite-difference normal only if something needs it, and the background for misses; then the
-// post effects the pack lists (a medium drawn as nodes, fog, glow, vignette: each a function of this pixel alone, so they
-// cost no pass of their own) and the tone map, into the final image.
+// post effects the pack lists (a medium drawn as nodes, fog, glow, vignette: each a function of
+// this pixel alone, so they cost no pass of their own) and the tone map, into the final image.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 3, r32f) uniform readonly image2D fg_depth;
