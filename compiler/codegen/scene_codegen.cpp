@@ -297,7 +297,7 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     roots.insert(roots.end(), volume.begin(), volume.end());
     bodies(w, needed_by(roots), needed_by({&ir_.outputs.at("distance")}));
     w.line("struct FgSurface { vec3 albedo; float diffuse; float ao; float sss; float rim; vec3 emission; float shadow; "
-           "vec3 specular; vec3 reflection; vec3 transmission; float ior; vec3 absorption; };",
+           "vec3 specular; vec3 specular_color; float roughness; vec3 reflection; vec3 transmission; float ior; vec3 absorption; };",
            generated());
     shading_function_head(w, "fg_scene_surface");
     function_body(w, surface_roots(), Context::Surface);
@@ -309,6 +309,8 @@ void SceneCodegen::surface_function(GlslWriter& w) const {
     w.line(fmt::format("    s.emission = {};", field("emission", "vec3(0.0)")), generated());
     w.line(fmt::format("    s.shadow = {};", field("shadow", "1.0")), generated());
     w.line(fmt::format("    s.specular = {};", field("specular", "vec3(0.0)")), generated());
+    w.line(fmt::format("    s.specular_color = {};", field("specular_color", "vec3(0.0)")), generated());
+    w.line(fmt::format("    s.roughness = {};", field("roughness", "0.35")), generated());
     w.line(fmt::format("    s.reflection = {};", field("reflection", "vec3(0.0)")), generated());
     w.line(fmt::format("    s.transmission = {};", field("transmission", "vec3(0.0)")), generated());
     w.line(fmt::format("    s.ior = {};", field("ior", "1.5")), generated());
@@ -376,7 +378,7 @@ void SceneCodegen::view_terms_function(GlslWriter& w, const std::function<std::s
     };
     shading_function_head(w, "fg_scene_view_terms");
     function_body(w, view_roots(), Context::Surface);
-    w.line("    FgSurface s = FgSurface(vec3(0.0), 0.0, 1.0, 0.0, 0.0, vec3(0.0), 1.0, vec3(0.0), vec3(0.0), vec3(0.0), 1.5, vec3(0.0));", generated());
+    w.line("    FgSurface s = FgSurface(vec3(0.0), 0.0, 1.0, 0.0, 0.0, vec3(0.0), 1.0, vec3(0.0), vec3(0.0), 0.35, vec3(0.0), vec3(0.0), 1.5, vec3(0.0));", generated());
     for (const auto& [name, fallback] : kScalarTerms) w.line(fmt::format("    s.{} = {};", name, view(name, fallback)), generated());
     w.line("    return s;", generated());
     w.line("}", generated());

@@ -221,6 +221,8 @@ CpuSurface CpuEvaluator::surface(const glm::dvec3& p, const CpuShadeInputs& shad
     if (auto v = get("emission")) s.emission = v->v3();
     if (auto v = get("shadow")) s.shadow = v->f();
     if (auto v = get("specular")) s.specular = v->v3();
+    if (auto v = get("specular_color")) s.specular_color = v->v3();
+    if (auto v = get("roughness")) s.roughness = v->f();
     if (auto v = get("reflection")) s.reflection = v->v3();
     if (auto v = get("transmission")) s.transmission = v->v3();
     if (auto v = get("ior")) s.ior = v->f();

@@ -27,6 +27,8 @@ struct CpuSurface {
     std::optional<double> diffuse, ao, sss, rim, shadow;
     glm::dvec3 emission{0.0};
     glm::dvec3 specular{0.0};
+    glm::dvec3 specular_color{0.0};
+    double roughness = 0.35;
     glm::dvec3 reflection{0.0};
     glm::dvec3 transmission{0.0};
     double ior = 1.5;

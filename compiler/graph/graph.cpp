@@ -25,6 +25,8 @@ const std::vector<GraphOutputSpec>& graph_output_specs() {
         {"emission", ValueType::Vec3, false, "emitted colour, added after lighting"},
         {"shadow", ValueType::Float, false, "how much of the light reaches the point, in [0, 1] (light.soft_shadow); scales diffuse and specular"},
         {"specular", ValueType::Vec3, false, "specular reflectance towards the camera (light.specular), times the light's colour and the shadow"},
+        {"specular_color", ValueType::Vec3, false, "the specular lobe's reflectance head-on (light.specular): where bound, the environment reflects in the lobe"},
+        {"roughness", ValueType::Float, false, "the specular lobe's roughness, 0 to 1 (light.specular); unbound: 0.35"},
         {"reflection", ValueType::Vec3, false, "mirror reflectance (light.reflection): the share of the scene seen in the mirror direction that the point reflects"},
         {"transmission", ValueType::Vec3, false, "the share of the light refracted through the body that the point passes on (light.refraction)"},
         {"ior", ValueType::Float, false, "the body's refractive index where it refracts; unbound: 1.5"},

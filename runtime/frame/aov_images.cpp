@@ -12,7 +12,7 @@ std::span<const AovImage> aov_images() {
         {"fg_albedo", "albedo", ImageFormat::RGBA16F, "albedo, diffuse factor"},
         {"fg_trap", "trap", ImageFormat::RGBA16F, "orbit trap"},
         {"fg_light", "light", ImageFormat::RGBA16F, "specular reflectance, shadow"},
-        {"fg_reflection", "reflection", ImageFormat::RGBA16F, "the colour the mirror bounce adds"},
+        {"fg_reflection", "reflection", ImageFormat::RGBA16F, "the colour reflections add: the mirror bounce, the environment in the specular lobe"},
         {"fg_refraction", "refraction", ImageFormat::RGBA16F, "the colour the light through glass adds"},
     }};
     return images;

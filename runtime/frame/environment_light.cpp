@@ -7,6 +7,8 @@
 
 #include <Imath/half.h>
 
+#include "environment_gloss.h"
+
 namespace fg {
 
 namespace {
@@ -92,6 +94,7 @@ std::vector<std::uint32_t> environment_words(const EnvironmentImage& image) {
         words[at++] = image.rgba[4 * t] | (std::uint32_t(image.rgba[4 * t + 1]) << 16);
         words[at++] = image.rgba[4 * t + 2] | (std::uint32_t(image.rgba[4 * t + 3]) << 16);
     }
+    append_environment_gloss(image, words);
     return words;
 }
 

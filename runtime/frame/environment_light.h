@@ -3,11 +3,13 @@
 // words holding the image, its diffuse irradiance as spherical harmonics, and the tables that draw
 // directions in proportion to its brightness:
 //   0, 1         width, height
+//   2            the word the specular lobe's section starts at (environment_gloss.h)
 //   4 .. 39      nine vec4: the irradiance E(n) / pi as order-2 spherical harmonics (Ramamoorthi and
 //                Hanrahan 2001), the cosine lobe folded in: what a white diffuse surface reflects
 //   40 ..        the rows' cumulative distribution (height + 1 floats, 0 .. 1), then each row's
 //                columns' (width + 1 floats each), by luminance times the row's sin(theta)
 //   then         the texels, RGBA half floats packed two to a word, row by row from the top
+//   then         the specular lobe's section
 // A uniform environment is a small image of radiance 1; the scene's colour scales either.
 #include <cstdint>
 #include <vector>

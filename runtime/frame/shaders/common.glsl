@@ -274,8 +274,8 @@ uint fg_owen_scramble(uint x, uint seed)
 
 // This sample's point of the unit square for one stochastic term (`stream`: 0 the area lights, 1
 // the environment on surfaces, 2 the fog's point along the ray (x) and a medium's offset along it
-// (y, volume.glsl), 3 the fog's direction of the sky, 4 and up a glass ray's choices at each exit),
-// scrambled by a seed of the pixel's and the term's own, so that the terms' points do not line up
+// (y, volume.glsl), 3 the fog's direction of the sky, 4 to 9 a glass ray's choices at each exit,
+// 10 the environment in the specular lobe), scrambled by a seed of the pixel's and the term's own, so that the terms' points do not line up
 // with each other.
 vec2 fg_sample_square(uint stream)
 {

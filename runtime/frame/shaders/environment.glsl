@@ -1,7 +1,8 @@
 // The environment (scene.environment): a lat-long HDR image around the scene, or a uniform sky, as
 // the runtime lays it out in one buffer (frame/environment_light.h). It is seen where rays miss and
 // in reflections; it lights the surface diffusely, by its irradiance in spherical harmonics in a
-// frame, and by directions drawn in proportion to its brightness while samples accumulate.
+// frame, and by directions drawn in proportion to its brightness while samples accumulate; a
+// specular lobe reflects it prefiltered by the lobe in a frame (environment_gloss.h).
 #ifdef FG_HAS_ENVIRONMENT
 layout(set = 0, binding = 17, std430) readonly buffer FgEnvironment { uint fg_env[]; };
 
@@ -33,26 +34,74 @@ vec2 fg_env_uv(vec3 l)
     return vec2(0.5 + atan(l.x, -l.z) * (0.5 / FG_FLOAT_PI), acos(clamp(l.y, -1.0, 1.0)) * (1.0 / FG_FLOAT_PI));
 }
 
-vec3 fg_env_texel(uint i, uint j)
+// Texel (i, j) of the image of width w whose texels start at word `first`.
+vec3 fg_env_texel(uint first, uint w, uint i, uint j)
 {
-    uint at = fg_env_texels() + 2u * (j * fg_env_width() + i);
+    uint at = first + 2u * (j * w + i);
     return vec3(unpackHalf2x16(fg_env[at]), unpackHalf2x16(fg_env[at + 1u]).x);
 }
 
-// The radiance arriving from world direction d: the image filtered bilinearly (wrapping around,
-// clamped at the poles), times the scene's colour and intensity.
-vec3 fg_environment_radiance(vec3 d)
+// The lat-long image of w x h texels from word `first`, filtered bilinearly at direction l of its
+// frame (wrapping around, clamped at the poles).
+vec3 fg_env_bilinear(uint first, uint w, uint h, vec3 l)
 {
-    vec2 uv = fg_env_uv(fg_env_local(d));
-    uint w = fg_env_width(), h = fg_env_height();
-    vec2 at = uv * vec2(w, h) - 0.5;
+    vec2 at = fg_env_uv(l) * vec2(w, h) - 0.5;
     vec2 base = floor(at), f = at - base;
     uint i0 = uint(int(base.x) + int(w)) % w, i1 = (i0 + 1u) % w;
     uint j0 = uint(clamp(int(base.y), 0, int(h) - 1)), j1 = uint(clamp(int(base.y) + 1, 0, int(h) - 1));
-    vec3 top = mix(fg_env_texel(i0, j0), fg_env_texel(i1, j0), f.x);
-    vec3 bottom = mix(fg_env_texel(i0, j1), fg_env_texel(i1, j1), f.x);
-    return fg_scene.environment.rgb * mix(top, bottom, f.y);
+    vec3 top = mix(fg_env_texel(first, w, i0, j0), fg_env_texel(first, w, i1, j0), f.x);
+    vec3 bottom = mix(fg_env_texel(first, w, i0, j1), fg_env_texel(first, w, i1, j1), f.x);
+    return mix(top, bottom, f.y);
 }
+
+// The radiance arriving from world direction d: the image, times the scene's colour and intensity.
+vec3 fg_environment_radiance(vec3 d)
+{
+    return fg_scene.environment.rgb * fg_env_bilinear(fg_env_texels(), fg_env_width(), fg_env_height(), fg_env_local(d));
+}
+
+#ifdef FG_OUT_SPECULAR_COLOR
+// The specular lobe's section (environment_gloss.h): its table and the prefiltered levels.
+const uint FG_ENV_GLOSS_TABLE = 32u;
+const uint FG_ENV_GLOSS_LEVELS = 5u;
+
+vec2 fg_env_gloss_entry(uint i, uint j)
+{
+    uint at = fg_env[2] + 2u * (j * FG_ENV_GLOSS_TABLE + i);
+    return vec2(fg_env_float(at), fg_env_float(at + 1u));
+}
+
+// (A, B) of the table at a cosine between normal and view and a roughness, filtered bilinearly: a
+// white sky reflects F0 * A + B.
+vec2 fg_environment_gloss_scale(float cos_view, float roughness)
+{
+    float last = float(FG_ENV_GLOSS_TABLE - 1u);
+    vec2 at = clamp(vec2(cos_view, roughness) * float(FG_ENV_GLOSS_TABLE) - 0.5, vec2(0.0), vec2(last));
+    uvec2 i0 = uvec2(at), i1 = min(i0 + 1u, uvec2(FG_ENV_GLOSS_TABLE - 1u));
+    vec2 f = at - vec2(i0);
+    return mix(mix(fg_env_gloss_entry(i0.x, i0.y), fg_env_gloss_entry(i1.x, i0.y), f.x),
+               mix(fg_env_gloss_entry(i0.x, i1.y), fg_env_gloss_entry(i1.x, i1.y), f.x), f.y);
+}
+
+// Prefiltered level k (0 the image itself, k the lobe of roughness 0.2 k) at direction l of the
+// image's frame.
+vec3 fg_env_gloss_level(uint k, vec3 l)
+{
+    if (k == 0u) return fg_env_bilinear(fg_env_texels(), fg_env_width(), fg_env_height(), l);
+    uint header = fg_env[2] + 2u * FG_ENV_GLOSS_TABLE * FG_ENV_GLOSS_TABLE + 4u * (k - 1u);
+    return fg_env_bilinear(fg_env[header + 2u], fg_env[header], fg_env[header + 1u], l);
+}
+
+// The radiance a lobe of this roughness gathers about world direction d (the mirror direction),
+// between the two nearest prefiltered levels.
+vec3 fg_environment_prefiltered(vec3 d, float roughness)
+{
+    vec3 l = fg_env_local(d);
+    float at = clamp(roughness, 0.0, 1.0) * float(FG_ENV_GLOSS_LEVELS);
+    uint k = min(uint(at), FG_ENV_GLOSS_LEVELS - 1u);
+    return fg_scene.environment.rgb * mix(fg_env_gloss_level(k, l), fg_env_gloss_level(k + 1u, l), at - float(k));
+}
+#endif
 
 // The environment's nine harmonics at world direction d, band l weighted by weight[l]. The runtime
 // stores the radiance's harmonics convolved with the clamped cosine (1, 2/3 and 1/4 per band).

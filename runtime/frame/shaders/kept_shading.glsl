@@ -5,12 +5,12 @@
 // evaluation where the whole shading costs three), so only the view-independent part travels.
 // Pasted after the scene's functions and shading.glsl.
 
-// The graph's albedo, diffuse, emission, shadow or specular read the view, or it reflects or
-// refracts: a colour shaded elsewhere cannot be split into a part that travels and scalar terms to
-// recompute, so every hit is shaded.
+// The graph's albedo, diffuse, emission, shadow or specular read the view, or it reflects (the
+// environment in its specular lobe too) or refracts: a colour shaded elsewhere cannot be split into
+// a part that travels and scalar terms to recompute, so every hit is shaded.
 #if defined(FG_OUT_ALBEDO_READS_VIEW) || defined(FG_OUT_DIFFUSE_READS_VIEW) || defined(FG_OUT_EMISSION_READS_VIEW) || \
     defined(FG_OUT_SHADOW_READS_VIEW) || defined(FG_OUT_SPECULAR_READS_VIEW) || defined(FG_HAS_REFLECTION) || \
-    defined(FG_HAS_REFRACTION)
+    defined(FG_HAS_REFRACTION) || (defined(FG_HAS_ENVIRONMENT) && defined(FG_OUT_SPECULAR_COLOR))
 const bool kShadingTravels = false;
 #else
 const bool kShadingTravels = true;

@@ -52,7 +52,7 @@ struct FgShading {
     float ao;
     float shadow;    // how much of the light reaches the point
     vec3 specular;   // the specular reflectance towards the camera
-    vec3 reflected;  // the colour the mirror bounce adds
+    vec3 reflected;  // the colour the mirror bounce and the environment in the specular lobe add
     vec3 refracted;  // the colour the light through a glass body adds
     FgSurface surface;   // the graph's outputs it came from
 };
@@ -232,6 +232,17 @@ vec3 fg_fog_light(vec3 ro, vec3 rd, float t)
 #endif
 
 #ifdef FG_HAS_ENVIRONMENT
+// Two tangents completing unit n to an orthonormal frame, without a branch on its direction (Duff
+// et al. 2017).
+void fg_tangent_frame(vec3 n, out vec3 tangent, out vec3 bitangent)
+{
+    float side = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (side + n.z);
+    float b = n.x * n.y * a;
+    tangent = vec3(1.0 + side * n.x * n.x * a, side * b, -side * n.x);
+    bitangent = vec3(b, side + n.y * n.y * a, -n.y);
+}
+
 // What the environment reflects off a white diffuse surface at the hit p (t along the eye's ray)
 // with normal n. In a frame: its irradiance over pi, occluded by the graph's ao. While samples
 // accumulate: one direction a sample, drawn half the time by the image's brightness and half the
@@ -245,13 +256,9 @@ vec3 fg_environment_light(vec3 p, vec3 n, float t, float ao)
     if (xi.x < 0.5) {
         dir = fg_environment_sample(vec2(2.0 * xi.x, xi.y));
     } else {
-        // Cosine-weighted about n (Malley): a disc point lifted onto the hemisphere, in a frame about
-        // the normal without a branch on its direction (Duff et al. 2017).
-        float side = n.z >= 0.0 ? 1.0 : -1.0;
-        float a = -1.0 / (side + n.z);
-        float b = n.x * n.y * a;
-        vec3 tangent = vec3(1.0 + side * n.x * n.x * a, side * b, -side * n.x);
-        vec3 bitangent = vec3(b, side + n.y * n.y * a, -n.y);
+        // Cosine-weighted about n (Malley): a disc point lifted onto the hemisphere.
+        vec3 tangent, bitangent;
+        fg_tangent_frame(n, tangent, bitangent);
         float r = sqrt(2.0 * xi.x - 1.0), phi = 2.0 * FG_FLOAT_PI * xi.y;
         dir = tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + n * sqrt(max(2.0 - 2.0 * xi.x, 0.0));
     }
@@ -262,6 +269,65 @@ vec3 fg_environment_light(vec3 p, vec3 n, float t, float ao)
     if (fg_march_from_hit(p, n, dir, t, q, total)) return vec3(0.0);
     float pdf = 0.5 * fg_environment_pdf(dir) + 0.5 * cosine / FG_FLOAT_PI;
     return fg_environment_radiance(dir) * (cosine / FG_FLOAT_PI / pdf);
+}
+#endif
+
+#if defined(FG_HAS_ENVIRONMENT) && defined(FG_OUT_SPECULAR_COLOR)
+// A normal of GGX alpha `alpha` about n drawn as seen from v (the distribution of visible normals,
+// Heitz 2018): the view stretched to alpha 1, a point of the projected half disc, unstretched.
+vec3 fg_ggx_visible_normal(vec3 v, vec3 n, float alpha, vec2 xi)
+{
+    vec3 tangent, bitangent;
+    fg_tangent_frame(n, tangent, bitangent);
+    vec3 stretched = normalize(vec3(alpha * dot(v, tangent), alpha * dot(v, bitangent), dot(v, n)));
+    float across = stretched.x * stretched.x + stretched.y * stretched.y;
+    vec3 t1 = across > 0.0 ? vec3(-stretched.y, stretched.x, 0.0) * inversesqrt(across) : vec3(1.0, 0.0, 0.0);
+    vec3 t2 = cross(stretched, t1);
+    float r = sqrt(xi.x), phi = 2.0 * FG_FLOAT_PI * xi.y;
+    float p1 = r * cos(phi), p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + stretched.z);
+    p2 = (1.0 - s) * sqrt(max(1.0 - p1 * p1, 0.0)) + s * p2;
+    vec3 m = p1 * t1 + p2 * t2 + sqrt(max(1.0 - p1 * p1 - p2 * p2, 0.0)) * stretched;
+    vec3 local = normalize(vec3(alpha * m.x, alpha * m.y, max(m.z, 0.0)));
+    return tangent * local.x + bitangent * local.y + n * local.z;
+}
+
+// What the graph's specular lobe (specular_color, roughness) reflects of the environment at the hit
+// p, t along rd, normal n. In a frame: the split sum, the image prefiltered by the lobe about the
+// mirror direction times the lobe's reflectance of a white sky, occluded by the graph's ao. While
+// samples accumulate: one direction a sample, drawn from the lobe's visible normals or (up to half
+// the time, the rougher the lobe the more often) by the image's brightness, weighted by both
+// densities, and shadowed by marching the fractal towards it.
+vec3 fg_environment_gloss(vec3 p, vec3 rd, vec3 n, float t, FgSurface s, float ao)
+{
+    vec3 v = -rd;
+    float nv = max(dot(n, v), 1e-4);
+    float roughness = clamp(s.roughness, 0.0, 1.0);
+    if (fg_frame.area_light.z == 0.0) {
+        vec2 scale = fg_environment_gloss_scale(nv, roughness);
+        return fg_environment_prefiltered(reflect(rd, n), roughness) * (s.specular_color * scale.x + scale.y) * ao;
+    }
+    float alpha = max(roughness * roughness, 1e-3), a2 = alpha * alpha;
+    // A near mirror's lobe is narrower than any texel's worth of the image: only its own normals.
+    float by_image = 0.5 * smoothstep(0.05, 0.3, roughness);
+    vec2 xi = fg_sample_square(10u);
+    vec3 dir = xi.x < by_image ? fg_environment_sample(vec2(xi.x / by_image, xi.y))
+                               : reflect(rd, fg_ggx_visible_normal(v, n, alpha, vec2((xi.x - by_image) / (1.0 - by_image), xi.y)));
+    float nl = dot(n, dir);
+    if (nl <= 0.0) return vec3(0.0);
+    vec3 h = normalize(v + dir);
+    float nh = max(dot(n, h), 0.0), vh = max(dot(v, h), 0.0);
+    float q = nh * nh * (a2 - 1.0) + 1.0;
+    float distribution = a2 / (FG_FLOAT_PI * q * q);
+    float visibility = 0.5 / max(nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2), 1e-6);
+    // The visible normals' density of dir: G1(v) D / (4 n.v).
+    float masking = 2.0 * nv / (nv + sqrt(a2 + (1.0 - a2) * nv * nv));
+    float pdf = by_image * fg_environment_pdf(dir) + (1.0 - by_image) * masking * distribution / (4.0 * nv);
+    vec3 q_hit;
+    float total;
+    if (fg_march_from_hit(p, n, dir, t, q_hit, total)) return vec3(0.0);
+    vec3 fresnel = s.specular_color + (vec3(1.0) - s.specular_color) * pow(1.0 - vh, 5.0);
+    return fg_environment_radiance(dir) * fresnel * (distribution * visibility * nl / pdf);
 }
 #endif
 
@@ -294,6 +360,7 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n, float t)
 #endif
     // The light reaches the point by its shadow: diffusely scattered by the albedo, and reflected
     // by the specular lobe.
+    vec3 reflected = vec3(0.0);
     vec3 color = s.albedo * (fg_scene.ambient.rgb * ao + fg_scene.light_color.rgb * diffuse * shadow) +
                  fg_scene.light_color.rgb * specular * shadow;
 #ifdef FG_HAS_LIGHTS
@@ -301,6 +368,10 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n, float t)
 #endif
 #ifdef FG_HAS_ENVIRONMENT
     color += s.albedo * fg_environment_light(p, n, t, ao);
+#ifdef FG_OUT_SPECULAR_COLOR
+    reflected = fg_environment_gloss(p, rd, n, t, s, ao);
+    color += reflected;
+#endif
 #endif
 #ifdef FG_HAS_SSS
     color += s.sss * fg_scene.sss_color.rgb * s.albedo;
@@ -311,7 +382,7 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n, float t)
 #ifdef FG_HAS_EMISSION
     color += s.emission;
 #endif
-    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, vec3(0.0), vec3(0.0), s);
+    return FgShading(color, s.albedo, diffuse, ao, shadow, specular, reflected, vec3(0.0), s);
 }
 
 #ifdef FG_HAS_REFLECTION
@@ -413,8 +484,9 @@ FgShading fg_shade_hit(vec3 p, vec3 rd, vec3 n, float t)
 #ifdef FG_HAS_REFLECTION
     // Only where the graph reflects: one graph often holds a mirror and surfaces that are not.
     if (s.surface.reflection != vec3(0.0)) {
-        s.reflected = s.surface.reflection * fg_reflected_light(p, rd, n, t);
-        s.color += s.reflected;
+        vec3 bounce = s.surface.reflection * fg_reflected_light(p, rd, n, t);
+        s.reflected += bounce;
+        s.color += bounce;
     }
 #endif
 #ifdef FG_HAS_REFRACTION
