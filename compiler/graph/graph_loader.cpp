@@ -471,6 +471,10 @@ private:
             diag_.error("output \"volume_color\" colours a medium whose density is unbound: bind \"volume_density\" too "
                         "(light.iteration_fog's density)",
                         "/outputs/volume_color");
+        if (os.contains("roughness") && !os.contains("specular_color"))
+            diag_.error("output \"roughness\" shapes a specular lobe whose reflectance is unbound: bind \"specular_color\" too "
+                        "(light.specular's specular_color)",
+                        "/outputs/roughness");
     }
 
     // Every reference names an existing node and output port, or an existing param.

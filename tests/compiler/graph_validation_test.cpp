@@ -166,6 +166,12 @@ TEST(GraphValidation, a_medium_colour_without_its_density_is_reported) {
     EXPECT_TRUE(has_error(check_front(g), "/outputs/volume_color", "", "bind \"volume_density\" too"));
 }
 
+TEST(GraphValidation, a_lobe_roughness_without_its_reflectance_is_reported) {
+    auto g = minimal_graph();
+    g["outputs"]["roughness"] = 0.3;
+    EXPECT_TRUE(has_error(check_front(g), "/outputs/roughness", "", "bind \"specular_color\" too"));
+}
+
 TEST(GraphValidation, an_unknown_output_name_lists_the_outputs) {
     auto g = minimal_graph();
     g["outputs"]["colour"] = "tone.color";

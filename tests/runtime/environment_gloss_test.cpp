@@ -215,3 +215,42 @@ TEST_F(EnvironmentGloss, a_rough_floor_reflects_a_bright_cap_of_sky_as_the_integ
     EXPECT_LT(sampled_worst, 0.03) << figures;
     EXPECT_LT(std::abs(frame_sum / exact_sum - 1.0), 0.1) << figures;
 }
+
+TEST_F(EnvironmentGloss, a_ball_over_a_metal_floor_hides_its_reflection_in_a_frame_as_in_samples) {
+    // A uniform sky over a floor of roughness 0.3, with and without a ball floating over it. The
+    // ball's share of each floor pixel's reflection: by the cone march in a frame, by shadowed
+    // directions in 64 samples (a direction that meets the ball brings nothing).
+    const std::string floor = R"({"id": "ground", "type": "prim.plane"})";
+    const std::string camera = R"({"position": [0, 2.5, 3], "target": [0, 0, 0], "fov_deg": 50})";
+    Pack bare = metal_under_sky(floor, "ground.distance", 0.3, "[1.0, 1.0, 1.0]", camera, R"({"color": [1.0, 1.0, 1.0]})");
+    Pack with_ball = metal_under_sky(floor + R"(, {"id": "up", "type": "xform.translate", "inputs": {"offset": [0, 0.9, 0]}},
+                                     {"id": "ball", "type": "prim.sphere", "inputs": {"p": "up.p", "radius": 0.6}},
+                                     {"id": "both", "type": "op.union", "inputs": {"a": "ground.distance", "b": "ball.distance"}})",
+                                     "both.distance", 0.3, "[1.0, 1.0, 1.0]", camera, R"({"color": [1.0, 1.0, 1.0]})");
+    HeadlessRenderer r0(test::shared_context(), bare, test::aov_frame(kSize), test::eye_at_camera(kSize));
+    HeadlessRenderer r1(test::shared_context(), with_ball, test::aov_frame(kSize), test::eye_at_camera(kSize));
+    const RenderedFrame frame0 = r0.render(r0.scene_camera(), 0.0), frame1 = r1.render(r1.scene_camera(), 0.0);
+    const RenderedFrame sampled0 = render_samples(r0, r0.scene_camera(), 0.0, 0, 64);
+    const RenderedFrame sampled1 = render_samples(r1, r1.scene_camera(), 0.0, 0, 64);
+    double difference = 0.0, hidden_frame = 0.0, hidden_sampled = 0.0;
+    int floor_pixels = 0, hidden = 0;
+    for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i) {
+        const glm::dvec4 p = test::aov_position(frame1, i);
+        // Floor pixels away from the ball's own outline, where samples see both.
+        if (!std::isfinite(p.w) || std::abs(p.y) > 0.05 || !hit(frame0, i)) continue;
+        const double in_frame = beauty(frame1, i, 1) / beauty(frame0, i, 1), in_samples = beauty(sampled1, i, 1) / beauty(sampled0, i, 1);
+        ++floor_pixels;
+        difference += std::abs(in_frame - in_samples);
+        if (in_samples < 0.2) ++hidden, hidden_frame += in_frame, hidden_sampled += in_samples;
+    }
+    difference /= std::max(floor_pixels, 1);
+    const std::string figures = fmt::format(
+        "{} floor pixels: the reflection's open share in a frame differs from 64 samples' by {:.3f} on average; where the "
+        "samples find it mostly hidden ({} pixels), {:.3f} in a frame against {:.3f}",
+        floor_pixels, difference, hidden, hidden_frame / std::max(hidden, 1), hidden_sampled / std::max(hidden, 1));
+    RecordProperty("figures", figures);
+    std::printf("%s\n", figures.c_str());
+    ASSERT_GT(hidden, 50) << figures;
+    EXPECT_LT(difference, 0.1) << figures;
+    EXPECT_LT(hidden_frame / hidden, 0.25) << figures;
+}

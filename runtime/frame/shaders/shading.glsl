@@ -292,6 +292,40 @@ vec3 fg_ggx_visible_normal(vec3 v, vec3 n, float alpha, vec2 xi)
     return tangent * local.x + bitangent * local.y + n * local.z;
 }
 
+// Steps the march of a reflection's cone takes in a frame.
+const int FG_GLOSS_STEPS = 32;
+
+// The share of a cone a passage leaves open, the passage in cone radii from its axis: 1 clear of
+// the cone, 0 through its axis, -1 fully hidden (light.soft_shadow's profile).
+float fg_cone_open(float passage)
+{
+    float r = clamp(passage, -1.0, 1.0);
+    return 0.25 * (1.0 + r) * (1.0 + r) * (2.0 - r);
+}
+
+// In a frame: the share of the lobe's cone about the mirror direction dir that the scene leaves
+// open, by the narrowest passage a march along dir finds. The cone holds half the lobe (half angle
+// 2 atan(alpha)), between 1 and 45 degrees. What the hit's own tangent plane hides of it is left
+// out: the lobe's reflectance (the table) already counts only what is above the surface.
+float fg_gloss_open(vec3 p, vec3 n, vec3 dir, float t, float alpha)
+{
+    float slope = clamp(2.0 * alpha / max(1.0 - alpha * alpha, 1e-3), 0.02, 1.0);
+    float start = fg_surface_offset(t);
+    vec3 origin = p + n * start;
+    float along = start, end = fg_bounds_interval(origin, dir, 0.0).y;
+    float passage = 1.0;
+    // How far the march has gone on at the surface: a distance that never goes negative (Mandelbox,
+    // KIFS, Kleinian) stays near 0 inside the set, and this stands in for the depth it cannot give.
+    float at_surface = 0.0;
+    for (int i = 0; i < FG_GLOSS_STEPS && along < end && passage > -1.0; i++) {
+        float h = float(fg_scene_distance(origin + dir * along)) * FG_STEP_SCALE;
+        at_surface = h >= 0.0 && h < (1.0 / 256.0) * slope * along ? at_surface + start : 0.0;
+        passage = min(passage, (h - at_surface) / (slope * along));
+        along += max(h, start);
+    }
+    return min(fg_cone_open(passage) / fg_cone_open(dot(dir, n) / slope), 1.0);
+}
+
 // What the graph's specular lobe (specular_color, roughness) reflects of the environment at the hit
 // p, t along rd, normal n. In a frame: the split sum, the image prefiltered by the lobe about the
 // mirror direction times the lobe's reflectance of a white sky, occluded by the graph's ao. While
@@ -305,7 +339,9 @@ vec3 fg_environment_gloss(vec3 p, vec3 rd, vec3 n, float t, FgSurface s, float a
     float roughness = clamp(s.roughness, 0.0, 1.0);
     if (fg_frame.area_light.z == 0.0) {
         vec2 scale = fg_environment_gloss_scale(nv, roughness);
-        return fg_environment_prefiltered(reflect(rd, n), roughness) * (s.specular_color * scale.x + scale.y) * ao;
+        vec3 mirror = reflect(rd, n);
+        float open = fg_gloss_open(p, n, mirror, t, roughness * roughness);
+        return fg_environment_prefiltered(mirror, roughness) * (s.specular_color * scale.x + scale.y) * (open * ao);
     }
     float alpha = max(roughness * roughness, 1e-3), a2 = alpha * alpha;
     // A near mirror's lobe is narrower than any texel's worth of the image: only its own normals.
