@@ -22,7 +22,7 @@ struct GlobalKnob {
 };
 
 // Id 0 is never used: SPIRV-Cross and some tools read it as "no constant".
-inline constexpr std::array<GlobalKnob, 21> kGlobalKnobs{{
+inline constexpr std::array<GlobalKnob, 22> kGlobalKnobs{{
     {1, "epsilon", "FG_EPSILON", ValueType::Float, 0.5, 0.001, 4.0,
      "hit threshold as a fraction of the pixel's cone radius at the hit distance"},
     {2, "max_steps", "FG_MAX_STEPS", ValueType::Int, 256, 1, 4096,
@@ -70,6 +70,9 @@ inline constexpr std::array<GlobalKnob, 21> kGlobalKnobs{{
     {21, "volume_steps", "FG_VOLUME_STEPS", ValueType::Int, 32, 1, 1024,
      "points of a glowing medium (volume_density) evaluated along each eye ray inside the bounds; each costs one "
      "evaluation of the medium's nodes"},
+    {22, "reflection_bounces", "FG_REFLECTION_BOUNCES", ValueType::Int, 1, 1, 8,
+     "mirror bounces a reflected ray takes (the graph's reflection): where it meets a surface that reflects too, it "
+     "reflects again, up to this many; the last surface it meets gets only its direct light"},
 }};
 
 inline constexpr std::uint32_t kFirstNodeKnobId = 100;

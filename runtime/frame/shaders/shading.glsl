@@ -422,16 +422,29 @@ FgShading fg_shade_direct(vec3 p, vec3 rd, vec3 n, float t)
 }
 
 #ifdef FG_HAS_REFLECTION
-// The scene in the mirror direction from the hit p, t along rd: one bounce, its hit shaded by its
-// direct terms (not reflected again), a miss by the background. It hits by the same rule as the
-// eye's rays, the pixel's cone grown over the whole path.
+// The scene in the mirror direction from the hit p, t along rd: what each bounce meets shaded by its
+// direct terms, and where that reflects too, reflected again, up to FG_REFLECTION_BOUNCES bounces; a
+// miss sees the background. It hits by the same rule as the eye's rays, the pixel's cone grown over
+// the whole path.
 vec3 fg_reflected_light(vec3 p, vec3 rd, vec3 n, float t)
 {
-    vec3 dir = reflect(rd, n);
-    vec3 q;
-    float total;
-    if (fg_march_from_hit(p, n, dir, t, q, total)) return fg_shade_direct(q, dir, fg_surface_normal(q, total), total).color;
-    return fg_background(dir);
+    vec3 light = vec3(0.0), weight = vec3(1.0);
+    for (int bounce = 0; bounce < FG_REFLECTION_BOUNCES; bounce++) {
+        vec3 dir = reflect(rd, n);
+        vec3 q;
+        float total;
+        if (!fg_march_from_hit(p, n, dir, t, q, total)) return light + weight * fg_background(dir);
+        vec3 m = fg_surface_normal(q, total);
+        FgShading met = fg_shade_direct(q, dir, m, total);
+        light += weight * met.color;
+        weight *= met.surface.reflection;
+        if (weight == vec3(0.0)) break;
+        p = q;
+        rd = dir;
+        n = m;
+        t = total;
+    }
+    return light;
 }
 #endif
 
