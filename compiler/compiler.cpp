@@ -151,6 +151,10 @@ std::optional<CompileResult> compile_graph(std::string_view graph_text, const No
 
     // Analyses.
     EffectSet effects = find_effects(*ir);
+    if (ir->outputs.count("specular_color") && !effects.has(Effect::Environment))
+        diag.warning("output \"specular_color\" reflects the environment in the specular lobe, and the scene has none: "
+                     "add scene.environment (an image or a colour), or leave the output unbound",
+                     "/outputs/specular_color");
     result.lipschitz = analyse_lipschitz(*ir, diag);
     if (diag.has_errors()) return std::nullopt;
     // The calibrated step factor (fgc calibrate) shortens every step beyond 1 / L; the step fraction

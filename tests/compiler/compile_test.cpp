@@ -189,3 +189,20 @@ TEST(Compile, an_unknown_lipschitz_rule_falls_back_with_a_warning) {
         warned |= d.severity == fg::Severity::Warning && d.message.find("unbounded at node \"shape\"") != std::string::npos;
     EXPECT_TRUE(warned) << diag.format();
 }
+
+TEST(Compile, a_lobe_bound_for_the_environment_in_a_scene_without_one_is_warned_of) {
+    auto g = minimal_graph();
+    g["outputs"]["specular_color"] = json::array({1.0, 0.8, 0.4});
+    auto warned = [&](const nlohmann::json& graph) {
+        fg::Diagnostics diag;
+        EXPECT_TRUE(compile_text(graph.dump(), diag)) << diag.format();
+        for (const auto& d : diag.items())
+            if (d.severity == fg::Severity::Warning && d.pointer == "/outputs/specular_color" &&
+                d.message.find("add scene.environment") != std::string::npos)
+                return true;
+        return false;
+    };
+    EXPECT_TRUE(warned(g));
+    g["scene"]["environment"] = {{"color", {1.0, 1.0, 1.0}}};
+    EXPECT_FALSE(warned(g));
+}

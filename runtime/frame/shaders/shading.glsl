@@ -328,7 +328,8 @@ float fg_gloss_open(vec3 p, vec3 n, vec3 dir, float t, float alpha)
 
 // What the graph's specular lobe (specular_color, roughness) reflects of the environment at the hit
 // p, t along rd, normal n. In a frame: the split sum, the image prefiltered by the lobe about the
-// mirror direction times the lobe's reflectance of a white sky, occluded by the graph's ao. While
+// mirror direction times the lobe's reflectance of a white sky, occluded by the cone the scene
+// leaves open about the mirror direction and by the graph's ao. While
 // samples accumulate: one direction a sample, drawn from the lobe's visible normals or (up to half
 // the time, the rougher the lobe the more often) by the image's brightness, weighted by both
 // densities, and shadowed by marching the fractal towards it.
