@@ -25,9 +25,9 @@ namespace {
 constexpr std::uint32_t kSize = 96;
 constexpr double kPi = std::numbers::pi;
 
-double beauty(const RenderedFrame& f, std::size_t i, int c) { return test::aov_half(f, "beauty", i, c); }
-glm::dvec3 beauty3(const RenderedFrame& f, std::size_t i) { return {beauty(f, i, 0), beauty(f, i, 1), beauty(f, i, 2)}; }
-bool hit(const RenderedFrame& f, std::size_t i) { return std::isfinite(test::aov_position(f, i).w); }
+glm::dvec3 beauty3(const RenderedFrame& f, std::size_t i) {
+    return {test::aov_beauty(f, i, 0), test::aov_beauty(f, i, 1), test::aov_beauty(f, i, 2)};
+}
 
 // A black body of GGX roughness `roughness` and head-on reflectance `f0`, lit by the sky alone.
 Pack metal_under_sky(const std::string& nodes, const std::string& distance, double roughness, const std::string& f0,
@@ -106,14 +106,15 @@ TEST_F(EnvironmentGloss, a_metal_ball_in_a_uniform_sky_reflects_what_its_lobe_ga
     glm::dvec3 frame_sum(0.0), sampled_sum(0.0), exact_sum(0.0);
     std::size_t ball = 0;
     for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i) {
-        if (!hit(frame, i)) continue;
+        if (!test::aov_hit(frame, i)) continue;
         const glm::dvec3 p(test::aov_position(frame, i));
         const double nv = glm::dot(glm::normalize(p), glm::normalize(eye - p));
         const glm::dvec3 want = expected(nv);
         // Away from the rim, where a pixel spans a wide range of angles and its samples see the sky.
         if (nv < 0.2) continue;
         ++ball;
-        for (int c = 0; c < 3; ++c) frame_worst = std::max(frame_worst, std::abs(beauty(frame, i, c) / want[c] - 1.0));
+        for (int c = 0; c < 3; ++c)
+            frame_worst = std::max(frame_worst, std::abs(test::aov_beauty(frame, i, c) / want[c] - 1.0));
         frame_sum += beauty3(frame, i);
         sampled_sum += beauty3(sampled, i);
         exact_sum += want;
@@ -148,7 +149,7 @@ TEST_F(EnvironmentGloss, a_polished_ball_shows_the_image_in_the_mirror_direction
     double frame_worst = 0.0, sampled_worst = 0.0;
     int checked = 0;
     for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i) {
-        if (!hit(frame, i)) continue;
+        if (!test::aov_hit(frame, i)) continue;
         const glm::dvec3 p(test::aov_position(frame, i)), n = glm::normalize(p), v = glm::normalize(eye - p);
         if (glm::dot(n, v) < 0.5) continue;
         const glm::dvec3 d = glm::reflect(-v, n);
@@ -157,7 +158,8 @@ TEST_F(EnvironmentGloss, a_polished_ball_shows_the_image_in_the_mirror_direction
         if (u < 0.05 || u > 0.95 || w < 0.1 || w > 0.9) continue;
         ++checked;
         for (const auto* f : {&frame, &sampled}) {
-            const double error = std::max(std::abs(beauty(*f, i, 0) - u), std::abs(beauty(*f, i, 1) - w));
+            const double error =
+                std::max(std::abs(test::aov_beauty(*f, i, 0) - u), std::abs(test::aov_beauty(*f, i, 1) - w));
             (f == &frame ? frame_worst : sampled_worst) = std::max(f == &frame ? frame_worst : sampled_worst, error);
         }
     }
@@ -177,9 +179,11 @@ TEST_F(EnvironmentGloss, a_rough_floor_reflects_a_bright_cap_of_sky_as_the_integ
     // sum's figure in a frame is reported beside it.
     const double radiance = 2.0, cap = kPi / 3.0, roughness = 0.5;
     const glm::dvec3 eye(0, 2, 2);
-    const std::string sky = test::write_lat_long_exr("gloss_cap", 240, 120, [&](double, double v) { return glm::dvec3(v * kPi < cap ? radiance : 0.0); });
+    const std::string sky = test::write_lat_long_exr("gloss_cap", 240, 120,
+                                                     [&](double, double v) { return glm::dvec3(v * kPi < cap ? radiance : 0.0); });
     Pack pack = metal_under_sky(R"({"id": "ground", "type": "prim.plane"})", "ground.distance", roughness, "[1.0, 1.0, 1.0]",
-                                R"({"position": [0, 2, 2], "target": [0, 0, 0], "fov_deg": 20})", fmt::format(R"({{"image": "{}"}})", sky));
+                                R"({"position": [0, 2, 2], "target": [0, 0, 0], "fov_deg": 20})",
+                                fmt::format(R"({{"image": "{}"}})", sky));
     std::filesystem::remove(sky);
     HeadlessRenderer r(test::shared_context(), pack, test::aov_frame(kSize), test::eye_at_camera(kSize));
     const RenderedFrame frame = r.render(r.scene_camera(), 0.0);
@@ -196,8 +200,8 @@ TEST_F(EnvironmentGloss, a_rough_floor_reflects_a_bright_cap_of_sky_as_the_integ
             double region_sampled = 0.0, region_frame = 0.0;
             for (std::uint32_t y = cy - 2; y <= cy + 2; ++y)
                 for (std::uint32_t x = cx - 2; x <= cx + 2; ++x) {
-                    region_sampled += beauty(sampled, std::size_t(y) * kSize + x, 0) / 25.0;
-                    region_frame += beauty(frame, std::size_t(y) * kSize + x, 0) / 25.0;
+                    region_sampled += test::aov_beauty(sampled, std::size_t(y) * kSize + x, 0) / 25.0;
+                    region_frame += test::aov_beauty(frame, std::size_t(y) * kSize + x, 0) / 25.0;
                 }
             sampled_worst = std::max(sampled_worst, std::abs(region_sampled / exact - 1.0));
             sampled_sum += region_sampled;
@@ -237,8 +241,9 @@ TEST_F(EnvironmentGloss, a_ball_over_a_metal_floor_hides_its_reflection_in_a_fra
     for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i) {
         const glm::dvec4 p = test::aov_position(frame1, i);
         // Floor pixels away from the ball's own outline, where samples see both.
-        if (!std::isfinite(p.w) || std::abs(p.y) > 0.05 || !hit(frame0, i)) continue;
-        const double in_frame = beauty(frame1, i, 1) / beauty(frame0, i, 1), in_samples = beauty(sampled1, i, 1) / beauty(sampled0, i, 1);
+        if (!std::isfinite(p.w) || std::abs(p.y) > 0.05 || !test::aov_hit(frame0, i)) continue;
+        const double in_frame = test::aov_beauty(frame1, i, 1) / test::aov_beauty(frame0, i, 1);
+        const double in_samples = test::aov_beauty(sampled1, i, 1) / test::aov_beauty(sampled0, i, 1);
         ++floor_pixels;
         difference += std::abs(in_frame - in_samples);
         if (in_samples < 0.2) ++hidden, hidden_frame += in_frame, hidden_sampled += in_samples;

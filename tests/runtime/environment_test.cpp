@@ -25,10 +25,6 @@ namespace {
 constexpr std::uint32_t kSize = 96;
 constexpr double kPi = std::numbers::pi;
 
-// Channel c of pixel i of the left eye's HDR beauty, and whether the pixel's ray met the surface.
-double beauty(const RenderedFrame& f, std::size_t i, int c) { return test::aov_half(f, "beauty", i, c); }
-bool hit(const RenderedFrame& f, std::size_t i) { return std::isfinite(test::aov_position(f, i).w); }
-
 // One body (`distance` and its nodes) lit by the environment alone, albedo 0.8.
 Pack lit_by_sky(const std::string& nodes, const std::string& distance, const std::string& camera, const std::string& environment) {
     return test::compile_pack(fmt::format(R"({{
@@ -54,13 +50,13 @@ TEST_F(Environment, a_white_diffuse_sphere_in_a_uniform_sky_returns_its_albedo) 
     double frame_worst = 0.0, sampled_sum = 0.0, sky_worst = 0.0;
     std::size_t ball = 0;
     for (std::size_t i = 0; i < kSize * kSize; ++i) {
-        if (!hit(frame, i)) {
-            sky_worst = std::max(sky_worst, std::abs(beauty(frame, i, 1) - 1.0));
+        if (!test::aov_hit(frame, i)) {
+            sky_worst = std::max(sky_worst, std::abs(test::aov_beauty(frame, i, 1) - 1.0));
             continue;
         }
         ++ball;
-        frame_worst = std::max(frame_worst, std::abs(beauty(frame, i, 1) / 0.8 - 1.0));
-        sampled_sum += beauty(sampled, i, 1);
+        frame_worst = std::max(frame_worst, std::abs(test::aov_beauty(frame, i, 1) / 0.8 - 1.0));
+        sampled_sum += test::aov_beauty(sampled, i, 1);
     }
     const double sampled_mean = sampled_sum / std::max<std::size_t>(ball, 1);
     const std::string figures = fmt::format(
@@ -92,10 +88,10 @@ TEST_F(Environment, a_sky_bright_near_the_zenith_lights_a_plane_as_the_integral_
     double frame_sum = 0.0, sampled_sum = 0.0;
     std::size_t plane = 0;
     for (std::size_t i = 0; i < kSize * kSize; ++i) {
-        if (!hit(frame, i)) continue;
+        if (!test::aov_hit(frame, i)) continue;
         ++plane;
-        frame_sum += beauty(frame, i, 0);
-        sampled_sum += beauty(sampled, i, 0);
+        frame_sum += test::aov_beauty(frame, i, 0);
+        sampled_sum += test::aov_beauty(sampled, i, 0);
     }
     const double exact = 0.8 * radiance * std::sin(cap) * std::sin(cap);
     const double c = std::cos(cap), s2 = std::sin(cap) * std::sin(cap);
@@ -138,7 +134,7 @@ TEST_F(Environment, the_background_shows_the_image_where_a_panorama_puts_it_turn
                 const glm::dvec3 l(std::cos(a) * d.x - std::sin(a) * d.z, d.y, std::sin(a) * d.x + std::cos(a) * d.z);
                 const double u = 0.5 + std::atan2(l.x, -l.z) / (2.0 * kPi), v = std::acos(l.y) / kPi;
                 const std::size_t i = std::size_t(y) * kSize + x;
-                worst = std::max({worst, std::abs(beauty(f, i, 0) - u), std::abs(beauty(f, i, 1) - v)});
+                worst = std::max({worst, std::abs(test::aov_beauty(f, i, 0) - u), std::abs(test::aov_beauty(f, i, 1) - v)});
             }
         const std::string figures = fmt::format("turned {} degrees: the background's (u, v) at most {:.5f} from the "
                                                 "direction's (a texel is {:.5f})", turn, worst, 1.0 / 512);
@@ -168,8 +164,8 @@ TEST_F(Environment, a_sky_split_into_halves_lights_each_side_of_a_sphere_by_its_
     for (std::uint32_t y = kSize / 2 - 2; y < kSize / 2 + 2; ++y)
         for (std::uint32_t x = kSize / 2 - 2; x < kSize / 2 + 2; ++x, ++n) {
             const std::size_t i = std::size_t(y) * kSize + x;
-            in_frame += glm::dvec3(beauty(frame, i, 0), beauty(frame, i, 1), beauty(frame, i, 2));
-            in_samples += glm::dvec3(beauty(sampled, i, 0), beauty(sampled, i, 1), beauty(sampled, i, 2));
+            in_frame += glm::dvec3(test::aov_beauty(frame, i, 0), test::aov_beauty(frame, i, 1), test::aov_beauty(frame, i, 2));
+            in_samples += glm::dvec3(test::aov_beauty(sampled, i, 0), test::aov_beauty(sampled, i, 1), test::aov_beauty(sampled, i, 2));
         }
     in_frame /= n;
     in_samples /= n;
@@ -199,7 +195,7 @@ TEST_F(Environment, samples_are_averaged_before_the_tone_map) {
         double sum = 0.0;
         std::size_t n = 0;
         for (std::size_t i = 0; i < std::size_t(kSize) * kSize; ++i)
-            if (hit(f, i)) sum += f.left.pixels[4 * i + 1], ++n;
+            if (test::aov_hit(f, i)) sum += f.left.pixels[4 * i + 1], ++n;
         return sum / std::max<std::size_t>(n, 1);
     };
     const double c = 0.8, expected = 255.0 * (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
