@@ -1,4 +1,5 @@
 #include "environment_gloss.h"
+#include "lat_long.h"
 
 #include <algorithm>
 #include <bit>
@@ -21,14 +22,6 @@ struct Sphere {
     std::vector<float> solid_angle; // per row
 };
 
-// The direction of texel (i, j)'s centre, as environment.glsl maps the image.
-void texel_direction(std::uint32_t i, std::uint32_t j, std::uint32_t w, std::uint32_t h, float* d) {
-    const double theta = (j + 0.5) * kPi / h, phi = ((i + 0.5) / w - 0.5) * 2.0 * kPi;
-    d[0] = static_cast<float>(std::sin(theta) * std::sin(phi));
-    d[1] = static_cast<float>(std::cos(theta));
-    d[2] = static_cast<float>(-std::sin(theta) * std::cos(phi));
-}
-
 Sphere sphere_of_size(std::uint32_t w, std::uint32_t h) {
     Sphere s;
     s.width = w;
@@ -37,8 +30,11 @@ Sphere sphere_of_size(std::uint32_t w, std::uint32_t h) {
     s.direction.resize(std::size_t(w) * h * 3);
     s.solid_angle.resize(h);
     for (std::uint32_t j = 0; j < h; ++j) {
-        s.solid_angle[j] = static_cast<float>((2.0 * kPi / w) * (std::cos(j * kPi / h) - std::cos((j + 1) * kPi / h)));
-        for (std::uint32_t i = 0; i < w; ++i) texel_direction(i, j, w, h, &s.direction[3 * (std::size_t(j) * w + i)]);
+        s.solid_angle[j] = static_cast<float>(lat_long_solid_angle(j, w, h));
+        for (std::uint32_t i = 0; i < w; ++i) {
+            const glm::dvec3 d = lat_long_direction(i, j, w, h);
+            for (int k = 0; k < 3; ++k) s.direction[3 * (std::size_t(j) * w + i) + k] = static_cast<float>(d[k]);
+        }
     }
     return s;
 }
@@ -52,7 +48,7 @@ Sphere resampled(std::uint32_t from_w, std::uint32_t from_h, Texel texel, std::u
     Sphere s = sphere_of_size(w, h);
     std::vector<double> sum(std::size_t(w) * h * 3, 0.0), weight(std::size_t(w) * h, 0.0);
     for (std::uint32_t j = 0; j < from_h; ++j) {
-        const double omega = std::cos(j * kPi / from_h) - std::cos((j + 1) * kPi / from_h);
+        const double omega = lat_long_solid_angle(j, from_w, from_h);
         const std::uint32_t to_j = std::min(h - 1, static_cast<std::uint32_t>((j + 0.5) * h / from_h));
         for (std::uint32_t i = 0; i < from_w; ++i) {
             const std::uint32_t to_i = std::min(w - 1, static_cast<std::uint32_t>((i + 0.5) * w / from_w));
@@ -67,11 +63,7 @@ Sphere resampled(std::uint32_t from_w, std::uint32_t from_h, Texel texel, std::u
 }
 
 Sphere resampled(const EnvironmentImage& image, std::uint32_t width) {
-    return resampled(image.width, image.height, [&](std::size_t t, int c) {
-        Imath::half v;
-        v.setBits(image.rgba[4 * t + c]);
-        return static_cast<double>(v);
-    }, width);
+    return resampled(image.width, image.height, [&](std::size_t t, int c) { return half_value(image.rgba[4 * t + c]); }, width);
 }
 
 Sphere resampled(const Sphere& sphere, std::uint32_t width) {

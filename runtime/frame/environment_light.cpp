@@ -8,16 +8,11 @@
 #include <Imath/half.h>
 
 #include "environment_gloss.h"
+#include "lat_long.h"
 
 namespace fg {
 
 namespace {
-
-double half_value(std::uint16_t bits) {
-    Imath::half h;
-    h.setBits(bits);
-    return static_cast<double>(h);
-}
 
 // The nine real spherical harmonics at unit direction d (x, y, z).
 std::array<double, 9> harmonics(double x, double y, double z) {
@@ -41,15 +36,13 @@ std::vector<std::uint32_t> environment_words(const EnvironmentImage& image) {
     std::array<std::array<double, 3>, 9> sh{};
     std::vector<double> row_sum(h, 0.0), weight(std::size_t(w) * h);
     for (std::uint32_t j = 0; j < h; ++j) {
-        const double theta = (j + 0.5) * pi / h;
-        const double solid_angle = (2.0 * pi / w) * (std::cos(j * pi / h) - std::cos((j + 1) * pi / h));
+        const double theta = (j + 0.5) * pi / h, solid_angle = lat_long_solid_angle(j, w, h);
         for (std::uint32_t i = 0; i < w; ++i) {
             const std::size_t t = std::size_t(j) * w + i;
             const double r = half_value(image.rgba[4 * t]), g = half_value(image.rgba[4 * t + 1]),
                          b = half_value(image.rgba[4 * t + 2]);
-            const double phi = ((i + 0.5) / w - 0.5) * 2.0 * pi;
-            // The direction of the image's point (u, v), as environment.glsl maps it.
-            const auto y = harmonics(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+            const glm::dvec3 d = lat_long_direction(i, j, w, h);
+            const auto y = harmonics(d.x, d.y, d.z);
             for (int k = 0; k < 9; ++k) {
                 sh[k][0] += r * y[k] * solid_angle;
                 sh[k][1] += g * y[k] * solid_angle;
